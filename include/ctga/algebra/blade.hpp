@@ -1,0 +1,36 @@
+// Basis blades as bitmasks. Bit i set means generator i (in the algebra's declared order)
+// is a factor; the canonical orientation of a blade is its generators in ascending order.
+// These rules are metric-free; the metric (generator squares) enters only in products.hpp.
+#pragma once
+
+#include <bit>
+#include <cstdint>
+
+namespace ctga {
+
+using blade_mask = std::uint32_t;
+
+// A basis blade with a sign: sign * (canonical blade `mask`). sign == 0 means "zero".
+struct signed_blade {
+    blade_mask mask = 0;
+    int sign = 0;
+    friend constexpr bool operator==(signed_blade, signed_blade) = default;
+};
+
+[[nodiscard]] constexpr int blade_grade(blade_mask m) noexcept { return std::popcount(m); }
+
+// Sign of the permutation that sorts the word (generators of a ascending, then generators of
+// b ascending) into ascending order: (-1)^(number of pairs i in a, j in b with i > j).
+// For disjoint a, b this is the sign in  a ∧ b = reorder_sign(a, b) · (a|b).
+[[nodiscard]] constexpr int reorder_sign(blade_mask a, blade_mask b) noexcept {
+    int swaps = 0;
+    for (a >>= 1; a != 0; a >>= 1) swaps += std::popcount(a & b);
+    return (swaps & 1) ? -1 : 1;
+}
+
+// Signs of the grade-dependent involutions of a grade-k blade.
+[[nodiscard]] constexpr int reverse_sign(int k) noexcept { return ((k * (k - 1) / 2) & 1) ? -1 : 1; }
+[[nodiscard]] constexpr int involute_sign(int k) noexcept { return (k & 1) ? -1 : 1; }
+[[nodiscard]] constexpr int conjugate_sign(int k) noexcept { return ((k * (k + 1) / 2) & 1) ? -1 : 1; }
+
+}  // namespace ctga

@@ -1,0 +1,154 @@
+// multivector<Alg, T, Layout>: the coefficients of exactly the blades of Layout, nothing else.
+// The blade set is part of the type, so every product's result type, and the list of
+// component products that make it, are computed by the compiler (plan.hpp).
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include "ctga/algebra/layout.hpp"
+#include "ctga/algebra/plan.hpp"
+#include "ctga/algebra/signature.hpp"
+
+namespace ctga {
+
+namespace detail {
+
+// Reading the blade names of a multivector type, with a diagnostic naming the problem.
+template <class Alg, fixed_string Name>
+struct blade_of {
+    static constexpr parsed_blade parsed = Alg::parse_blade(Name.view());
+    static_assert(parsed.status != blade_name_status::unknown_generator,
+                  "ctga: unknown blade name (one of its factors is not a generator of this algebra)");
+    static_assert(parsed.status != blade_name_status::repeated_generator,
+                  "ctga: a generator appears twice in a blade name");
+    static constexpr blade_mask mask = parsed.mask;
+    static constexpr int sign = parsed.sign;
+};
+
+template <std::size_t N>
+constexpr bool all_distinct(const layout<N>& l) {
+    for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t j = i + 1; j < N; ++j)
+            if (l.masks[i] == l.masks[j]) return false;
+    return true;
+}
+
+template <class Alg, fixed_string... Names>
+struct named_layout_of {
+    static constexpr auto value = [] {
+        layout<sizeof...(Names)> l;
+        std::size_t i = 0;
+        ((l.masks[i] = blade_of<Alg, Names>::mask, l.signs[i] = static_cast<signed char>(blade_of<Alg, Names>::sign), ++i),
+         ...);
+        return l;
+    }();
+    static_assert(all_distinct(value), "ctga: a blade is listed twice in a multivector type");
+};
+
+// The canonical name of a blade as a template argument, so that a diagnostic can show it.
+template <class Alg, blade_mask M>
+constexpr auto blade_name_string() {
+    fixed_string<Alg::blade_name_size(M) + 1> s;
+    std::size_t k = 0;
+    Alg::write_blade_name(M, [&](char c) { s.chars[k++] = c; });
+    return s;
+}
+
+// Instantiated only to report a blade the target type cannot hold; the name is in the
+// template argument list of the diagnostic.
+template <fixed_string Blade>
+struct target_type_lacks_blade {
+    static_assert(Blade.size() == 0,
+                  "ctga: the target multivector type lacks a blade the source can make non-zero "
+                  "(named in target_type_lacks_blade<...>); add it to the type or drop it with ctga::project");
+};
+
+// First blade of From that To lacks, as an index into From, or −1.
+template <auto From, auto To>
+constexpr int first_missing() {
+    for (std::size_t i = 0; i < From.size(); ++i)
+        if (!To.contains(From.masks[i])) return static_cast<int>(i);
+    return -1;
+}
+
+struct from_components_t {};
+
+}  // namespace detail
+
+template <class Alg, class T, auto Layout>
+class multivector {
+public:
+    using algebra_type = Alg;
+    using scalar_type = T;
+    static constexpr auto layout = Layout;
+
+    [[nodiscard]] static constexpr std::size_t size() noexcept { return Layout.size(); }
+
+    // Zero.
+    constexpr multivector() noexcept = default;
+
+    // One coefficient per blade of the layout, in its order and orientation:
+    //   cl031::mv<double, "e2e3", "e3e1", "e1e2", "e1e", "e2e", "e3e"> s{wx, wy, wz, vx, vy, vz};
+    // A lone non-scalar blade is constructed explicitly, so that a number never silently
+    // becomes a bivector; a lone scalar converts implicitly.
+    template <class... U>
+        requires(sizeof...(U) == size() && size() > 0 && (std::convertible_to<U, T> && ...))
+    constexpr explicit(size() == 1 && Layout.masks[0] != 0) multivector(U... v) noexcept
+        : c_{static_cast<T>(v)...} {}
+
+    constexpr multivector(detail::from_components_t, const std::array<T, size()>& c) noexcept : c_(c) {}
+
+    // From another blade set of the same algebra: every blade the source can make non-zero must
+    // be in this type (a compile error names the first one that is not); ctga::project drops.
+    // (A template is never the copy constructor, so same-layout copies stay trivial.)
+    template <auto L2>
+    constexpr multivector(const multivector<Alg, T, L2>& x) noexcept;
+
+    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return c_[i]; }
+    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return c_[i]; }
+    [[nodiscard]] constexpr T* data() noexcept { return c_.data(); }
+    [[nodiscard]] constexpr const T* data() const noexcept { return c_.data(); }
+    [[nodiscard]] constexpr const std::array<T, size()>& components() const noexcept { return c_; }
+
+    // The coefficient of a blade named as written ("e3e1" reads −(coefficient of e1e3));
+    // zero when the blade is not in the type.
+    template <fixed_string Name>
+    [[nodiscard]] constexpr T get() const noexcept {
+        using b = detail::blade_of<Alg, Name>;
+        constexpr int i = Layout.index_of(b::mask);
+        if constexpr (i < 0) return T{};
+        else if constexpr (b::sign * Layout.signs[i] > 0) return c_[i];
+        else return -c_[i];
+    }
+
+    // Set the coefficient of a blade named as written; the blade must be in the type.
+    template <fixed_string Name>
+    constexpr void set(const T& value) noexcept {
+        using b = detail::blade_of<Alg, Name>;
+        constexpr int i = Layout.index_of(b::mask);
+        static_assert(i >= 0, "ctga: set<Name>: this multivector type does not hold that blade");
+        if constexpr (i >= 0) c_[i] = (b::sign * Layout.signs[i] > 0) ? value : T(-value);
+    }
+
+private:
+    std::array<T, size()> c_{};
+};
+
+template <class X>
+inline constexpr bool is_multivector_v = false;
+template <class Alg, class T, auto L>
+inline constexpr bool is_multivector_v<multivector<Alg, T, L>> = true;
+
+template <class X>
+concept multivector_type = is_multivector_v<std::remove_cvref_t<X>>;
+
+template <fixed_string Name, class Alg, class T, auto L>
+[[nodiscard]] constexpr T get(const multivector<Alg, T, L>& x) noexcept {
+    return x.template get<Name>();
+}
+
+}  // namespace ctga

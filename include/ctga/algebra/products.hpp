@@ -1,0 +1,139 @@
+// The products and involutions of the algebra, on basis blades. Every bilinear product is a
+// rule  (blade a, blade b) -> ±blade or 0, and every linear map used here (involutions, grade
+// projection, complements, automorphisms) is a rule  blade -> ±blade or 0. One plan builder
+// (plan.hpp) turns any such rule into the compile-time term list of a product of multivectors,
+// so adding a product means adding a rule here and nothing else.
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "ctga/algebra/blade.hpp"
+
+namespace ctga::rules {
+
+inline constexpr signed_blade zero{0, 0};
+
+// Geometric product of basis blades: sort the word a·b (each swap of distinct generators flips
+// the sign), then contract equal neighbours to their square. A square 0 kills the term.
+template <class Alg>
+struct geometric {
+    static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
+        int sign = reorder_sign(a, b);
+        for (std::size_t i = 0; i < Alg::dimension; ++i)
+            if ((a & b) >> i & 1u) sign *= Alg::squares[i];
+        return sign == 0 ? zero : signed_blade{a ^ b, sign};
+    }
+};
+
+// Exterior product: the geometric product of blades with no common generator, else 0.
+template <class Alg>
+struct exterior {
+    static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
+        return (a & b) ? zero : signed_blade{a | b, reorder_sign(a, b)};
+    }
+};
+
+// Left contraction a ⌋ b: the grade gr(b) − gr(a) part of ab, non-zero only when a ⊆ b.
+template <class Alg>
+struct left_contraction {
+    static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
+        return (a & ~b) ? zero : geometric<Alg>::apply(a, b);
+    }
+};
+
+// Right contraction a ⌊ b: the grade gr(a) − gr(b) part of ab, non-zero only when b ⊆ a.
+template <class Alg>
+struct right_contraction {
+    static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
+        return (b & ~a) ? zero : geometric<Alg>::apply(a, b);
+    }
+};
+
+// Scalar product: the grade-0 part of ab.
+template <class Alg>
+struct scalar {
+    static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
+        return (a != b) ? zero : geometric<Alg>::apply(a, b);
+    }
+};
+
+// Shuffle (regressive) product, paper §4, the Grassmann–Cayley definition:
+//   b ∨ c = Σ_σ sign(σ) det(b_σ(1..n−k), c_1..c_k) b_σ(n−k+1) ∧ … ∧ b_σ(j).
+// For basis blades the determinant is non-zero only for the one split of b whose first part K
+// is the complement of c, so b ∨ c ≠ 0 iff b ∪ c holds every generator, and then
+//   b ∨ c = sign(b → K,R) · det(K, c) · R,   R = b ∩ c,
+// with det(K, c) the sign that sorts the word K·c into the basis order. No metric, no
+// pseudoscalar inverse: valid in degenerate algebras such as Cl(0,6,2).
+template <class Alg>
+struct regressive {
+    static constexpr signed_blade apply(blade_mask b, blade_mask c) noexcept {
+        constexpr blade_mask all = Alg::pseudoscalar_mask;
+        if ((b | c) != all) return zero;
+        const blade_mask k = all & ~c;
+        const blade_mask r = b & c;
+        return {r, reorder_sign(k, r) * reorder_sign(k, c)};
+    }
+};
+
+// ---- linear rules: blade -> ±blade or 0 ------------------------------------------------
+
+// Reverse: a grade-k blade picks up (−1)^(k(k−1)/2).
+template <class Alg>
+struct reverse {
+    static constexpr signed_blade apply(blade_mask a) noexcept { return {a, reverse_sign(blade_grade(a))}; }
+};
+
+// Grade involution: every generator negated, (−1)^k.
+template <class Alg>
+struct involute {
+    static constexpr signed_blade apply(blade_mask a) noexcept { return {a, involute_sign(blade_grade(a))}; }
+};
+
+// Clifford conjugation, the paper's `*`: reverse of the grade involution, (−1)^(k(k+1)/2).
+template <class Alg>
+struct conjugate {
+    static constexpr signed_blade apply(blade_mask a) noexcept { return {a, conjugate_sign(blade_grade(a))}; }
+};
+
+template <class Alg, int K>
+struct grade_projection {
+    static constexpr signed_blade apply(blade_mask a) noexcept { return blade_grade(a) == K ? signed_blade{a, 1} : zero; }
+};
+
+// Metric-free complements (no pseudoscalar inverse): with I the canonical pseudoscalar,
+//   a ∧ right_complement(a) = I   and   left_complement(a) ∧ a = I.
+template <class Alg>
+struct right_complement {
+    static constexpr signed_blade apply(blade_mask a) noexcept {
+        const blade_mask c = Alg::pseudoscalar_mask & ~a;
+        return {c, reorder_sign(a, c)};
+    }
+};
+
+template <class Alg>
+struct left_complement {
+    static constexpr signed_blade apply(blade_mask a) noexcept {
+        const blade_mask c = Alg::pseudoscalar_mask & ~a;
+        return {c, reorder_sign(c, a)};
+    }
+};
+
+// The automorphism sending generator i to generator Perm[i] (an algebra automorphism when the
+// squares agree, checked by the caller). A blade's image is the word of images, re-sorted.
+template <class Alg, std::array<int, Alg::dimension> Perm>
+struct permutation {
+    static constexpr signed_blade apply(blade_mask a) noexcept {
+        blade_mask image = 0;
+        int sign = 1;
+        for (std::size_t i = 0; i < Alg::dimension; ++i) {
+            if (!(a >> i & 1u)) continue;
+            const blade_mask bit = blade_mask{1} << Perm[i];
+            sign *= reorder_sign(image, bit);  // appending the image of generator i on the right
+            image |= bit;
+        }
+        return {image, sign};
+    }
+};
+
+}  // namespace ctga::rules

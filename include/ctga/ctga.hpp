@@ -1,0 +1,16 @@
+// ctga: compile-time Clifford algebra for rigid-body dynamics
+// (J. M. Selig, E. Bayro-Corrochano, "Rigid Body Dynamics Using Clifford Algebra", 2010).
+// The umbrella header: the whole library.
+#pragma once
+
+#include "ctga/algebra/blade.hpp"
+#include "ctga/algebra/evaluate.hpp"
+#include "ctga/algebra/fixed_string.hpp"
+#include "ctga/algebra/io.hpp"
+#include "ctga/algebra/layout.hpp"
+#include "ctga/algebra/multivector.hpp"
+#include "ctga/algebra/operations.hpp"
+#include "ctga/algebra/plan.hpp"
+#include "ctga/algebra/products.hpp"
+#include "ctga/algebra/signature.hpp"
+#include "ctga/algebras.hpp"

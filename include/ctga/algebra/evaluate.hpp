@@ -28,31 +28,42 @@ constexpr bool unrolled() {
     return true;
 }
 
-template <class T, auto t, class A, class B>
-constexpr T linear_value(const A& a, const B& b) noexcept {
-    if constexpr (t.operand == 0) {
-        if constexpr (t.sign > 0) return a[t.i]; else return -a[t.i];
-    } else {
-        if constexpr (t.sign > 0) return b[t.i]; else return -b[t.i];
-    }
+// One term's value. The term is a compile-time constant of the plan, so once inlined its sign
+// test folds away and a negative term becomes a subtraction; one instantiation per operand
+// types, not one per term, keeps compile time linear in the number of products.
+template <class T, class A, class B>
+constexpr T term_value(const linear_term& t, const A& a, const B& b) noexcept {
+    const T& v = t.operand == 0 ? a[t.i] : b[t.i];
+    return t.sign > 0 ? v : T(-v);
 }
 
-template <class T, auto t, class A, class B>
-constexpr T bilinear_value(const A& a, const B& b) noexcept {
-    if constexpr (t.sign > 0) return a[t.ia] * b[t.ib]; else return -(a[t.ia] * b[t.ib]);
+template <class T, class A, class B>
+constexpr T term_value(const bilinear_term& t, const A& a, const B& b) noexcept {
+    return t.sign > 0 ? T(a[t.ia] * b[t.ib]) : T(-(a[t.ia] * b[t.ib]));
 }
 
-template <class T, class Plan, bool Bilinear, std::size_t R, class A, class B>
+#if defined(__clang__)
+#define CTGA_UNROLL _Pragma("clang loop unroll(full)")
+#elif defined(__GNUC__)
+#define CTGA_UNROLL _Pragma("GCC unroll 1024")
+#else
+#define CTGA_UNROLL
+#endif
+
+// Result component R: its run of terms, summed from the first term (not from zero: x + 0.0 is
+// not x for x = −0.0, so a zero start would cost an addition the compiler may not remove).
+// The loop has a compile-time trip count over a constexpr array and is fully unrolled.
+template <class T, class Plan, std::size_t R, class A, class B>
 constexpr T component(const A& a, const B& b) noexcept {
     constexpr std::size_t begin = Plan::offsets[R];
-    constexpr std::size_t count = Plan::offsets[R + 1] - begin;
-    if constexpr (count == 0) {
+    constexpr std::size_t end = Plan::offsets[R + 1];
+    if constexpr (begin == end) {
         return T{};
     } else {
-        return [&]<std::size_t... I>(std::index_sequence<I...>) {
-            if constexpr (Bilinear) return (bilinear_value<T, Plan::terms[begin + I]>(a, b) + ...);
-            else return (linear_value<T, Plan::terms[begin + I]>(a, b) + ...);
-        }(std::make_index_sequence<count>{});
+        T acc = term_value<T>(Plan::terms[begin], a, b);
+        CTGA_UNROLL
+        for (std::size_t k = begin + 1; k < end; ++k) acc += term_value<T>(Plan::terms[k], a, b);
+        return acc;
     }
 }
 
@@ -63,7 +74,7 @@ constexpr Result evaluate(const A& a, const B& b) noexcept {
     constexpr std::size_t n = Result::size();
     if constexpr (unrolled<Plan>()) {
         return [&]<std::size_t... R>(std::index_sequence<R...>) {
-            return Result(from_components_t{}, std::array<T, n>{component<T, Plan, Bilinear, R>(a, b)...});
+            return Result(from_components_t{}, std::array<T, n>{component<T, Plan, R>(a, b)...});
         }(std::make_index_sequence<n>{});
     } else {
         std::array<T, n> out{};

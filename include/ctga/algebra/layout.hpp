@@ -11,7 +11,6 @@
 #include <algorithm>
 #include <array>
 #include <cstddef>
-#include <vector>
 
 #include "ctga/algebra/blade.hpp"
 #include "ctga/algebra/fixed_string.hpp"
@@ -41,44 +40,29 @@ struct layout {
 
 namespace detail {
 
-constexpr void sort_unique_canonical(std::vector<blade_mask>& v) {
-    std::sort(v.begin(), v.end(), canonical_less);
-    v.erase(std::unique(v.begin(), v.end()), v.end());
+// The canonical layout of the union of two blade sets.
+template <auto L1, auto L2>
+constexpr auto union_size() {
+    std::size_t n = L1.size();
+    for (blade_mask m : L2.masks) n += !L1.contains(m);
+    return n;
 }
 
-// The canonical layout of the blade set Source::masks() (any order, repeats allowed).
-// Source::masks() is a constexpr function returning std::vector<blade_mask>; a constexpr vector
-// cannot outlive the evaluation, so the size is computed first, then the array filled.
-template <class Source>
-constexpr auto canonical_layout() {
-    constexpr std::size_t n = [] {
-        auto v = Source::masks();
-        sort_unique_canonical(v);
-        return v.size();
-    }();
-    layout<n> out;
-    auto v = Source::masks();
-    sort_unique_canonical(v);
-    for (std::size_t i = 0; i < n; ++i) {
-        out.masks[i] = v[i];
-        out.signs[i] = 1;
-    }
+template <auto L1, auto L2>
+constexpr auto make_union() {
+    layout<union_size<L1, L2>()> out;
+    std::size_t n = 0;
+    for (blade_mask m : L1.masks) out.masks[n++] = m;
+    for (blade_mask m : L2.masks)
+        if (!L1.contains(m)) out.masks[n++] = m;
+    std::sort(out.masks.begin(), out.masks.end(), canonical_less);
+    for (auto& s : out.signs) s = 1;
     return out;
 }
-
-// Blade sets as types, to feed canonical_layout.
-template <auto L1, auto L2>
-struct union_of {
-    static constexpr std::vector<blade_mask> masks() {
-        std::vector<blade_mask> v(L1.masks.begin(), L1.masks.end());
-        v.insert(v.end(), L2.masks.begin(), L2.masks.end());
-        return v;
-    }
-};
 
 }  // namespace detail
 
 template <auto L1, auto L2>
-inline constexpr auto layout_union = detail::canonical_layout<detail::union_of<L1, L2>>();
+inline constexpr auto layout_union = detail::make_union<L1, L2>();
 
 }  // namespace ctga

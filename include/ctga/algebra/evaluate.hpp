@@ -114,7 +114,7 @@ template <auto L2>
 constexpr multivector<Alg, T, Layout>::multivector(const multivector<Alg, T, L2>& x) noexcept {
     constexpr int missing = detail::first_missing<L2, Layout>();
     if constexpr (missing >= 0) {
-        (void)sizeof(detail::target_type_lacks_blade<detail::blade_name_string<Alg, L2.masks[missing]>()>);
+        (void)sizeof(detail::target_lacks<Alg, L2.masks[missing]>);
     } else {
         using plan = detail::linear_plan<Alg, Layout, std::array<signed char, 2>{1, 1}, L2>;
         *this = detail::evaluate<multivector, plan, false>(x, x);

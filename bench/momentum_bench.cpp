@@ -11,11 +11,14 @@ namespace {
 
 using G = ctga::cl062;
 using screw = G::mv<double, "e2e3", "e3e1", "e1e2", "e1e", "e2e", "e3e">;
-// a general symmetric inertia: the 21 blades a_i a_j e_k e_l pairing the 6 co-screw and 6 screw
-// directions symmetrically (the 6×6 matrix of §2 has 21 independent entries)
-using inertia = G::mv<double, "a1ae1e", "a2ae2e", "a3ae3e", "a2a3e2e3", "a3a1e3e1", "a1a2e1e2", "a1ae2e",
-                      "a1ae3e", "a2ae3e", "a2a3e3e1", "a2a3e1e2", "a3a1e1e2", "a1ae2e3", "a1ae3e1",
-                      "a1ae1e2", "a2ae2e3", "a2ae3e1", "a2ae1e2", "a3ae2e3", "a3ae3e1", "a3ae1e2">;
+// A general inertia (§5): one blade for each pair (co-screw direction, screw direction), the
+// 36 entries of the 6×6 matrix of §2 (symmetric, but each entry has its own blade).
+using inertia = G::mv<double,
+    "a2a3e2e3", "a2a3e3e1", "a2a3e1e2", "a2a3e1e", "a2a3e2e", "a2a3e3e", "a3a1e2e3", "a3a1e3e1",
+    "a3a1e1e2", "a3a1e1e", "a3a1e2e", "a3a1e3e", "a1a2e2e3", "a1a2e3e1", "a1a2e1e2", "a1a2e1e",
+    "a1a2e2e", "a1a2e3e", "a1ae2e3", "a1ae3e1", "a1ae1e2", "a1ae1e", "a1ae2e", "a1ae3e", "a2ae2e3",
+    "a2ae3e1", "a2ae1e2", "a2ae1e", "a2ae2e", "a2ae3e", "a3ae2e3", "a3ae3e1", "a3ae1e2", "a3ae1e",
+    "a3ae2e", "a3ae3e">;
 
 constexpr std::size_t batch = 64;  // inputs cycle through a batch, so nothing is constant-folded
 

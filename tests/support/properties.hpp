@@ -286,7 +286,9 @@ void run_suite(std::uint64_t seed, int trials = 3) {
                              random_fill<typename decltype(+shapes[hana::size_c<(I + 2) % n>])::type>(rng)),
              ...);
         }(std::make_index_sequence<n>{});
-        constexpr int top = Alg::dimension < 3 ? static_cast<int>(Alg::dimension) : 3;
+        // blades of grade up to 3 (up to 2 past 8 generators, where two generic 3-blades already
+        // make 14,400 blade pairs)
+        constexpr int top = Alg::dimension < 3 ? static_cast<int>(Alg::dimension) : Alg::dimension > 8 ? 2 : 3;
         [&]<int... R>(std::integer_sequence<int, R...>) {
             ([&]<int Rg>() {
                 [&]<int... S>(std::integer_sequence<int, S...>) {

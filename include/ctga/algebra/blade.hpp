@@ -23,8 +23,8 @@ struct signed_blade {
 // b ascending) into ascending order: (-1)^(number of pairs i in a, j in b with i > j).
 // For disjoint a, b this is the sign in  a ∧ b = reorder_sign(a, b) · (a|b).
 [[nodiscard]] constexpr int reorder_sign(blade_mask a, blade_mask b) noexcept {
-    int swaps = 0;
-    for (a >>= 1; a != 0; a >>= 1) swaps += std::popcount(a & b);
+    int swaps = 0;  // for each generator j of b, the generators of a above it
+    for (; b != 0; b &= b - 1) swaps += std::popcount(a & ~((b & (0u - b)) * 2u - 1u));
     return (swaps & 1) ? -1 : 1;
 }
 

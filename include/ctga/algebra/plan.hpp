@@ -80,14 +80,18 @@ constexpr layout<N> canonical_layout_from(const std::array<blade_mask, Cap>& mas
     return l;
 }
 
-// The terms grouped by result component (a stable counting sort), and where each run starts.
+// The terms grouped by result component (a stable counting sort); component[k] is term k's.
 template <class Term, std::size_t N, std::size_t R, class Raw>
-constexpr std::array<Term, N> group_by_component(const Raw& raw) {
+constexpr std::array<Term, N> group_by_component(const Raw& raw, const std::array<std::uint16_t, N>& component) {
     std::array<std::uint32_t, R + 1> next{};
-    for (std::size_t k = 0; k < N; ++k) ++next[raw.terms[k].r + 1];
+    for (std::size_t k = 0; k < N; ++k) ++next[component[k] + 1u];
     for (std::size_t r = 0; r < R; ++r) next[r + 1] += next[r];
     std::array<Term, N> out{};
-    for (std::size_t k = 0; k < N; ++k) out[next[raw.terms[k].r]++] = raw.terms[k];
+    for (std::size_t k = 0; k < N; ++k) {
+        Term t = raw.terms[k];
+        t.r = component[k];
+        out[next[t.r]++] = t;
+    }
     return out;
 }
 
@@ -106,9 +110,10 @@ struct canonical_plan {
     static constexpr auto result = canonical_layout_from<blades.count>(blades.masks);
     static constexpr std::size_t term_count = Raw.count;
     static constexpr auto terms = [] {
-        auto raw = Raw;
-        for (std::size_t k = 0; k < raw.count; ++k) raw.terms[k].r = canonical_position(blades.masks, blades.count, raw.masks[k]);
-        return group_by_component<Term, term_count, result.size()>(raw);
+        std::array<std::uint16_t, term_count> component{};
+        for (std::size_t k = 0; k < term_count; ++k)
+            component[k] = canonical_position(blades.masks, blades.count, Raw.masks[k]);
+        return group_by_component<Term, term_count, result.size()>(Raw, component);
     }();
     static constexpr auto offsets = term_offsets<result.size()>(terms);
 };
@@ -189,7 +194,11 @@ struct linear_plan {
         return raw;
     }();
     static constexpr std::size_t term_count = raw.count;
-    static constexpr auto terms = group_by_component<linear_term, term_count, Target.size()>(raw);
+    static constexpr auto terms = [] {
+        std::array<std::uint16_t, term_count> component{};
+        for (std::size_t k = 0; k < term_count; ++k) component[k] = raw.terms[k].r;
+        return group_by_component<linear_term, term_count, Target.size()>(raw, component);
+    }();
     static constexpr auto offsets = term_offsets<Target.size()>(terms);
 };
 

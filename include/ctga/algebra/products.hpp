@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 
 #include "ctga/algebra/blade.hpp"
@@ -20,8 +21,8 @@ template <class Alg>
 struct geometric {
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         int sign = reorder_sign(a, b);
-        for (std::size_t i = 0; i < Alg::dimension; ++i)
-            if ((a & b) >> i & 1u) sign *= Alg::squares[i];
+        for (blade_mask common = a & b; common != 0 && sign != 0; common &= common - 1)
+            sign *= Alg::squares[std::countr_zero(common)];
         return sign == 0 ? zero : signed_blade{a ^ b, sign};
     }
 };

@@ -10,11 +10,10 @@
 #include "support/catch.hpp"
 #include "support/shapes.hpp"
 
-namespace {
+namespace scalars {
 
-using namespace ctga;
-
-// a + b ε with ε² = 0: the ε part of f(x + x′ε) is f′(x) x′.
+// a + b ε with ε² = 0: the ε part of f(x + x′ε) is f′(x) x′. (A named namespace: Clang warns
+// about hidden friends it cannot see used in an anonymous one.)
 struct dual {
     double re = 0, eps = 0;
     constexpr dual() = default;
@@ -26,6 +25,13 @@ struct dual {
     friend constexpr bool operator==(dual, dual) = default;
     friend std::ostream& operator<<(std::ostream& os, dual d) { return os << d.re << "+" << d.eps << "ε"; }
 };
+
+}  // namespace scalars
+
+namespace {
+
+using namespace ctga;
+using scalars::dual;
 
 template <class T>
 using motor = cl031::mv<T, "1", "e2e3", "e3e1", "e1e2", "ee1e2e3", "e1e", "e2e", "e3e">;

@@ -13,9 +13,9 @@ using Q0_type = G::mv<double, "a2a3e1e", "a3a1e2e", "a1a2e3e", "a1ae2e3", "a2ae3
 constexpr screw   s{0, 0, 1, 0.5, 0, 0};
 constexpr inertia N{0.1, 0.2, 0.3, 2, 2, 2};       // dx, dy, dz, m, m, m
 constexpr Q0_type Q0{1, 1, 1, 1, 1, 1};
-constexpr auto    A = G::blade<"a1a2a3a">();
+constexpr auto    A = G::basis<"a1a2a3a">;           // the paper's invariant A, an exact constant
 
-constexpr auto P = A & (N ^ s);                    // P = A ∨ (N ∧ s) = m v·(a2a3, a3a1, a1a2) + d ω·(a1a, a2a, a3a)
+constexpr auto P = A & (N ^ s);                    // P = A ∨ (N ∧ s), a lazy expression: 6 products, no more
 static_assert(scalar_part(P & (Q0 ^ s)) == 0.8);   // P ∨ (Q0 ∧ s) = 2 E_k = dz ωz² + m vx², at compile time
 static_assert((A & (Q0 ^ s)) == bar(s));           // A ∨ (Q0 ∧ s) = s̄
 

@@ -47,7 +47,7 @@ TEST_CASE("identity 2: Q0 ∧ s = (ωx a2a3 + ωy a3a1 + ωz a1a2 + vx a1a + vy 
           "[paper][identities]") {
     constexpr auto lhs = Q0 ^ s;
     constexpr coscrew s_on_a{wx, wy, wz, vx, vy, vz};
-    constexpr auto rhs = s_on_a * E;
+    constexpr auto rhs = eval(s_on_a * E);
     static_assert(lhs == rhs);
     static_assert(decltype(lhs)::size() == 6, "Q0 ∧ s has exactly six blades");
     CHECK(lhs == rhs);

@@ -43,7 +43,7 @@ double products_error(std::uint64_t seed) {
     std::mt19937_64 rng(seed);
     const auto g = test::random_fill<motor<T>>(rng);
     const auto s = test::random_fill<screw<T>>(rng);
-    const auto sandwich = g * s * conj(g);
+    const auto sandwich = eval(g * s * conj(g));
     const auto dg = dense::to_dense(g), ds = dense::to_dense(s);
     const auto expected = dense::gp(dense::gp(dg, ds), dense::conjugate(dg));
     return static_cast<double>(dense::max_abs_diff(dense::to_dense(sandwich), expected) / dense::max_abs(expected));
@@ -67,9 +67,9 @@ TEST_CASE("a user scalar type: dual numbers give the derivative of a motor sandw
         screw<dual> s;
         for (std::size_t i = 0; i < g.size(); ++i) g[i] = dual(g0[i], g1[i]);
         for (std::size_t i = 0; i < s.size(); ++i) s[i] = dual(s0[i], s1[i]);
-        const auto r = g * s * conj(g);
-        const auto value = g0 * s0 * conj(g0);
-        const auto derivative = g1 * s0 * conj(g0) + g0 * s1 * conj(g0) + g0 * s0 * conj(g1);
+        const auto r = eval(g * s * conj(g));
+        const auto value = eval(g0 * s0 * conj(g0));
+        const auto derivative = eval(g1 * s0 * conj(g0) + g0 * s1 * conj(g0) + g0 * s0 * conj(g1));
         static_assert(decltype(r)::layout.masks == decltype(value)::layout.masks);
         for (std::size_t i = 0; i < r.size(); ++i) {
             CHECK(r[i].re == Approx(value[i]).margin(1e-14));

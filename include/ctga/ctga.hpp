@@ -4,13 +4,16 @@
 #pragma once
 
 #include "ctga/algebra/blade.hpp"
-#include "ctga/algebra/evaluate.hpp"
 #include "ctga/algebra/fixed_string.hpp"
 #include "ctga/algebra/io.hpp"
 #include "ctga/algebra/layout.hpp"
 #include "ctga/algebra/multivector.hpp"
 #include "ctga/algebra/operations.hpp"
-#include "ctga/algebra/plan.hpp"
 #include "ctga/algebra/products.hpp"
 #include "ctga/algebra/signature.hpp"
 #include "ctga/algebras.hpp"
+#include "ctga/expr/expression.hpp"
+#include "ctga/expr/nodes.hpp"
+#include "ctga/expr/normal_form.hpp"
+#include "ctga/expr/program.hpp"
+#include "ctga/expr/rational.hpp"

@@ -8,6 +8,7 @@
 #include <type_traits>
 
 #include "ctga/algebra/multivector.hpp"
+#include "ctga/algebra/operations.hpp"
 
 namespace ctga {
 
@@ -43,6 +44,12 @@ std::ostream& operator<<(std::ostream& os, const multivector<Alg, T, L>& x) {
     }
     if (first) os << '0';
     return os;
+}
+
+// An expression prints as its value.
+template <class Alg, class T, class Node, class Leaves>
+std::ostream& operator<<(std::ostream& os, const expression<Alg, T, Node, Leaves>& e) {
+    return os << eval(e);
 }
 
 }  // namespace ctga

@@ -10,10 +10,12 @@
 #include <utility>
 
 #include "ctga/algebra/layout.hpp"
-#include "ctga/algebra/plan.hpp"
 #include "ctga/algebra/signature.hpp"
 
 namespace ctga {
+
+template <class Alg, class T, class Node, class Leaves>
+class expression;  // expr/expression.hpp
 
 namespace detail {
 
@@ -115,6 +117,11 @@ public:
     // (A template is never the copy constructor, so same-layout copies stay trivial.)
     template <auto L2>
     constexpr multivector(const multivector<Alg, T, L2>& x) noexcept;
+
+    // Evaluate an expression into this type: the same rule, and only this type's components
+    // are computed (operations.hpp).
+    template <class T2, class Node, class Leaves>
+    constexpr multivector(const expression<Alg, T2, Node, Leaves>& e) noexcept;
 
     [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return c_[i]; }
     [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return c_[i]; }

@@ -1,9 +1,11 @@
-// The operations of the algebra on multivectors, each a rule of products.hpp run through a plan.
+// The operations of the algebra. Each builds a lazy expression (expr/expression.hpp) whose
+// node is a rule of products.hpp; the whole expression is compiled into one straight-line
+// program when it is assigned, evaluated or read.
 //
 // Operators follow the common geometric-algebra convention:
 //   x * y   geometric product          x ^ y   exterior product ∧
 //   x & y   shuffle/regressive ∨ (§4)  x | y   left contraction ⌋
-//   ~x      reverse                    -x, x + y, x - y, s * x, x * s, x / s
+//   ~x      reverse                    -x, x + y, x - y, s * x, x * s, x / s, half * x
 // C++ gives ^, & and | lower precedence than + and ==: write the paper's A ∨ (N ∧ s) as
 // A & (N ^ s), with the parentheses the paper has anyway.
 #pragma once
@@ -11,135 +13,88 @@
 #include <array>
 #include <concepts>
 #include <cstddef>
+#include <tuple>
 #include <type_traits>
 #include <utility>
 
-#include "ctga/algebra/evaluate.hpp"
 #include "ctga/algebra/multivector.hpp"
-#include "ctga/algebra/plan.hpp"
 #include "ctga/algebra/products.hpp"
+#include "ctga/expr/expression.hpp"
+#include "ctga/expr/nodes.hpp"
+#include "ctga/expr/program.hpp"
 
 namespace ctga {
 
-namespace detail {
-
-template <class X, class Y>
-constexpr void check_same_algebra_and_scalar() {
-    static_assert(std::is_same_v<typename X::algebra_type, typename Y::algebra_type>,
-                  "ctga: the operands belong to different algebras");
-    static_assert(std::is_same_v<typename X::scalar_type, typename Y::scalar_type>,
-                  "ctga: the operands have different scalar types; convert one explicitly");
-}
-
-template <template <class> class Rule, class X, class Y>
-constexpr auto bilinear(const X& x, const Y& y) noexcept {
-    check_same_algebra_and_scalar<X, Y>();
-    using alg = typename X::algebra_type;
-    using plan = bilinear_plan<alg, Rule<alg>, X::layout, Y::layout>;
-    using result = multivector<alg, typename X::scalar_type, plan::result>;
-    return evaluate<result, plan, true>(x, y);
-}
-
-template <class Rule, class X>
-constexpr auto unary(const X& x) noexcept {
-    using plan = unary_plan<typename X::algebra_type, Rule, X::layout>;
-    using result = multivector<typename X::algebra_type, typename X::scalar_type, plan::result>;
-    return evaluate<result, plan, false>(x, x);
-}
-
-template <signed char SignY, class X, class Y>
-constexpr auto sum(const X& x, const Y& y) noexcept {
-    check_same_algebra_and_scalar<X, Y>();
-    using alg = typename X::algebra_type;
-    constexpr auto target = layout_union<X::layout, Y::layout>;
-    using plan = linear_plan<alg, target, std::array<signed char, 2>{1, SignY}, X::layout, Y::layout>;
-    using result = multivector<alg, typename X::scalar_type, target>;
-    return evaluate<result, plan, false>(x, y);
-}
-
-template <class X, class F>
-constexpr X map_components(const X& x, F f) noexcept {
-    return [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return X(from_components_t{}, std::array<typename X::scalar_type, X::size()>{f(x[I])...});
-    }(std::make_index_sequence<X::size()>{});
-}
-
-// A scalar as a multivector of the same algebra.
-template <class X>
-using scalar_mv = multivector<typename X::algebra_type, typename X::scalar_type, layout<1>{{0}, {1}}>;
-
-template <class S, class X>
-concept scalar_for = !multivector_type<S> && std::convertible_to<S, typename std::remove_cvref_t<X>::scalar_type>;
-
-}  // namespace detail
-
 // ---- bilinear products -------------------------------------------------------------------
 
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto gp(const X& x, const Y& y) noexcept { return detail::bilinear<rules::geometric>(x, y); }
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto wedge(const X& x, const Y& y) noexcept { return detail::bilinear<rules::exterior>(x, y); }
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto vee(const X& x, const Y& y) noexcept { return detail::bilinear<rules::regressive>(x, y); }
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto left_contraction(const X& x, const Y& y) noexcept {
-    return detail::bilinear<rules::left_contraction>(x, y);
-}
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto right_contraction(const X& x, const Y& y) noexcept {
-    return detail::bilinear<rules::right_contraction>(x, y);
-}
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto scalar_product(const X& x, const Y& y) noexcept {
-    return detail::bilinear<rules::scalar>(x, y);
+// A bilinear product by a rule of products.hpp, as a function object: gp(x, y), wedge(x, y), …
+template <template <class> class Rule>
+struct bilinear_product {
+    template <operand X, operand Y>
+    [[nodiscard]] constexpr auto operator()(X&& x, Y&& y) const noexcept {
+        return expr::combine<expr::bilinear<Rule>>(std::forward<X>(x), std::forward<Y>(y));
+    }
+};
+inline constexpr bilinear_product<rules::geometric> gp{};
+inline constexpr bilinear_product<rules::exterior> wedge{};
+inline constexpr bilinear_product<rules::regressive> vee{};
+inline constexpr bilinear_product<rules::left_contraction> left_contraction{};
+inline constexpr bilinear_product<rules::right_contraction> right_contraction{};
+inline constexpr bilinear_product<rules::scalar> scalar_product{};
+
+template <operand X, operand Y>
+[[nodiscard]] constexpr auto operator*(X&& x, Y&& y) noexcept { return gp(std::forward<X>(x), std::forward<Y>(y)); }
+template <operand X, operand Y>
+[[nodiscard]] constexpr auto operator^(X&& x, Y&& y) noexcept { return wedge(std::forward<X>(x), std::forward<Y>(y)); }
+template <operand X, operand Y>
+[[nodiscard]] constexpr auto operator&(X&& x, Y&& y) noexcept { return vee(std::forward<X>(x), std::forward<Y>(y)); }
+template <operand X, operand Y>
+[[nodiscard]] constexpr auto operator|(X&& x, Y&& y) noexcept {
+    return left_contraction(std::forward<X>(x), std::forward<Y>(y));
 }
 
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto operator*(const X& x, const Y& y) noexcept { return gp(x, y); }
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto operator^(const X& x, const Y& y) noexcept { return wedge(x, y); }
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto operator&(const X& x, const Y& y) noexcept { return vee(x, y); }
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto operator|(const X& x, const Y& y) noexcept { return left_contraction(x, y); }
+template <operand X, operand Y>
+[[nodiscard]] constexpr auto operator+(X&& x, Y&& y) noexcept {
+    return expr::combine<expr::additive<1>>(std::forward<X>(x), std::forward<Y>(y));
+}
+template <operand X, operand Y>
+[[nodiscard]] constexpr auto operator-(X&& x, Y&& y) noexcept {
+    return expr::combine<expr::additive<-1>>(std::forward<X>(x), std::forward<Y>(y));
+}
 
 // ---- linear maps -------------------------------------------------------------------------
 
-template <multivector_type X>
-[[nodiscard]] constexpr auto reverse(const X& x) noexcept {
-    return detail::unary<rules::reverse<typename X::algebra_type>>(x);
+// A linear blade rule of products.hpp, as a function object: reverse(x), conj(x), …
+template <template <class> class Rule>
+struct linear_map {
+    template <operand X>
+    [[nodiscard]] constexpr auto operator()(X&& x) const noexcept {
+        return expr::apply_map<Rule>(std::forward<X>(x));
+    }
+};
+inline constexpr linear_map<rules::reverse> reverse{};
+inline constexpr linear_map<rules::involute> involute{};
+inline constexpr linear_map<rules::conjugate> conj{};  // Clifford conjugation, the paper's x*: g g* = 1 (§3)
+inline constexpr linear_map<rules::right_complement> right_complement{};
+inline constexpr linear_map<rules::left_complement> left_complement{};
+
+template <operand X>
+[[nodiscard]] constexpr auto operator~(X&& x) noexcept { return reverse(std::forward<X>(x)); }
+template <int K, operand X>
+[[nodiscard]] constexpr auto grade(X&& x) noexcept {
+    return expr::apply_map<rules::grade_projection_of<K>::template rule>(std::forward<X>(x));
 }
-template <multivector_type X>
-[[nodiscard]] constexpr auto operator~(const X& x) noexcept { return reverse(x); }
-template <multivector_type X>
-[[nodiscard]] constexpr auto involute(const X& x) noexcept {
-    return detail::unary<rules::involute<typename X::algebra_type>>(x);
-}
-// Clifford conjugation, the paper's x*: g g* = 1 for a rigid motion g (§3).
-template <multivector_type X>
-[[nodiscard]] constexpr auto conj(const X& x) noexcept {
-    return detail::unary<rules::conjugate<typename X::algebra_type>>(x);
-}
-template <int K, multivector_type X>
-[[nodiscard]] constexpr auto grade(const X& x) noexcept {
-    return detail::unary<rules::grade_projection<typename X::algebra_type, K>>(x);
-}
-template <multivector_type X>
-[[nodiscard]] constexpr auto right_complement(const X& x) noexcept {
-    return detail::unary<rules::right_complement<typename X::algebra_type>>(x);
-}
-template <multivector_type X>
-[[nodiscard]] constexpr auto left_complement(const X& x) noexcept {
-    return detail::unary<rules::left_complement<typename X::algebra_type>>(x);
+template <operand X>
+[[nodiscard]] constexpr auto operator-(X&& x) noexcept {
+    return expr::apply_scale<expr::rational{-1, 1}>(std::forward<X>(x));
 }
 
 // The algebra automorphism sending generator i to generator Images...[i]. It is one only when
 // each generator goes to a generator with the same square; anything else is rejected.
-template <int... Images, multivector_type X>
-[[nodiscard]] constexpr auto automorphism(const X& x) noexcept {
-    using alg = typename X::algebra_type;
-    static_assert(sizeof...(Images) == alg::dimension,
-                  "ctga: an automorphism needs exactly one image per generator");
+template <int... Images, operand X>
+[[nodiscard]] constexpr auto automorphism(X&& x) noexcept {
+    using alg = typename std::remove_cvref_t<X>::algebra_type;
+    static_assert(sizeof...(Images) == alg::dimension, "ctga: an automorphism needs exactly one image per generator");
     if constexpr (sizeof...(Images) == alg::dimension) {
         constexpr std::array<int, alg::dimension> perm{Images...};
         constexpr bool permutation = [&] {
@@ -157,85 +112,247 @@ template <int... Images, multivector_type X>
                 if (alg::squares[i] != alg::squares[perm[i]]) return false;
             return true;
         }();
-        static_assert(squares_kept,
-                      "ctga: the automorphism maps a generator to one with a different square");
-        if constexpr (permutation && squares_kept) return detail::unary<rules::permutation<alg, perm>>(x);
+        static_assert(squares_kept, "ctga: the automorphism maps a generator to one with a different square");
+        if constexpr (permutation && squares_kept)
+            return expr::apply_map<rules::permutation_of<perm>::template rule>(std::forward<X>(x));
     }
 }
 
 // The paper's bar involution (§5) on a doubled algebra: generator i ↔ generator i + n/2
 // (in Cl(0,6,2): ai ↔ ei, a ↔ e).
-template <multivector_type X>
-[[nodiscard]] constexpr auto bar(const X& x) noexcept {
-    using alg = typename X::algebra_type;
-    constexpr std::size_t n = alg::dimension;
+template <operand X>
+[[nodiscard]] constexpr auto bar(X&& x) noexcept {
+    constexpr std::size_t n = std::remove_cvref_t<X>::algebra_type::dimension;
     static_assert(n % 2 == 0, "ctga: bar needs a doubled algebra (an even number of generators)");
     return [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return automorphism<static_cast<int>((I + n / 2) % n)...>(x);
+        return automorphism<static_cast<int>((I + n / 2) % n)...>(std::forward<X>(x));
     }(std::make_index_sequence<n>{});
 }
 
-// Keep only the blades of Target (a multivector type), dropping the rest on purpose.
-template <multivector_type Target, multivector_type X>
+// The coefficient of one blade (named as written) as a scalar expression.
+template <fixed_string Name, operand X>
+[[nodiscard]] constexpr auto coeff(X&& x) noexcept {
+    using alg = typename std::remove_cvref_t<X>::algebra_type;
+    using b = detail::blade_of<alg, Name>;
+    return expr::apply_map<rules::coefficient_of<b::mask, b::sign>::template rule>(std::forward<X>(x));
+}
+
+// ---- scalars -----------------------------------------------------------------------------
+
+namespace detail {
+template <class S, class X>
+concept runtime_scalar_for =
+    !operand<S> && !is_rational_v<std::remove_cvref_t<S>> &&
+    (std::is_void_v<typename std::remove_cvref_t<X>::scalar_type> ||
+     std::convertible_to<S, typename std::remove_cvref_t<X>::scalar_type>);
+
+template <class S, class X>
+using scalar_of = std::conditional_t<std::is_void_v<typename std::remove_cvref_t<X>::scalar_type>, std::remove_cvref_t<S>,
+                                     typename std::remove_cvref_t<X>::scalar_type>;
+
+template <class X, class S>
+constexpr auto scalar_operand(const S& s) noexcept {
+    using T = scalar_of<S, X>;
+    return expr::scalar_expression<typename std::remove_cvref_t<X>::algebra_type, T>(static_cast<T>(s));
+}
+}  // namespace detail
+
+template <class S, operand X>
+    requires detail::runtime_scalar_for<S, X>
+[[nodiscard]] constexpr auto operator*(const S& s, X&& x) noexcept {
+    return detail::scalar_operand<X>(s) * std::forward<X>(x);
+}
+template <operand X, class S>
+    requires detail::runtime_scalar_for<S, X>
+[[nodiscard]] constexpr auto operator*(X&& x, const S& s) noexcept {
+    return std::forward<X>(x) * detail::scalar_operand<X>(s);
+}
+template <operand X, class S>
+    requires detail::runtime_scalar_for<S, X>
+[[nodiscard]] constexpr auto operator/(X&& x, const S& s) noexcept {
+    using T = detail::scalar_of<S, X>;
+    return std::forward<X>(x) * detail::scalar_operand<X>(T(1) / static_cast<T>(s));
+}
+template <operand X, class S>
+    requires detail::runtime_scalar_for<S, X>
+[[nodiscard]] constexpr auto operator+(X&& x, const S& s) noexcept {
+    return std::forward<X>(x) + detail::scalar_operand<X>(s);
+}
+template <class S, operand X>
+    requires detail::runtime_scalar_for<S, X>
+[[nodiscard]] constexpr auto operator+(const S& s, X&& x) noexcept {
+    return detail::scalar_operand<X>(s) + std::forward<X>(x);
+}
+template <operand X, class S>
+    requires detail::runtime_scalar_for<S, X>
+[[nodiscard]] constexpr auto operator-(X&& x, const S& s) noexcept {
+    return std::forward<X>(x) - detail::scalar_operand<X>(s);
+}
+template <class S, operand X>
+    requires detail::runtime_scalar_for<S, X>
+[[nodiscard]] constexpr auto operator-(const S& s, X&& x) noexcept {
+    return detail::scalar_operand<X>(s) - std::forward<X>(x);
+}
+
+// Exact rational factors: half * (s1 * s2 − s2 * s1).
+template <std::int64_t N, std::int64_t D, operand X>
+[[nodiscard]] constexpr auto operator*(q<N, D>, X&& x) noexcept {
+    return expr::apply_scale<q<N, D>::value>(std::forward<X>(x));
+}
+template <operand X, std::int64_t N, std::int64_t D>
+[[nodiscard]] constexpr auto operator*(X&& x, q<N, D>) noexcept {
+    return expr::apply_scale<q<N, D>::value>(std::forward<X>(x));
+}
+
+// ---- evaluation --------------------------------------------------------------------------
+
+// The value of an operand as a multivector of the blades it can make non-zero.
+template <class T = void, operand X>
+[[nodiscard]] constexpr auto eval(const X& x) noexcept {
+    using D = std::remove_cvref_t<X>;
+    if constexpr (multivector_type<D>) {
+        return x;
+    } else {
+        using U = std::conditional_t<std::is_void_v<typename D::scalar_type>, std::conditional_t<std::is_void_v<T>, double, T>,
+                                     typename D::scalar_type>;
+        using result = multivector<typename D::algebra_type, U, D::layout>;
+        return result(detail::from_components_t{}, x.template evaluate<U, D::layout>());
+    }
+}
+
+// Keep only the blades of Target (a multivector type), dropping the rest on purpose; only the
+// kept components are computed.
+template <multivector_type Target, operand X>
 [[nodiscard]] constexpr Target project(const X& x) noexcept {
-    detail::check_same_algebra_and_scalar<Target, X>();
-    using plan = detail::linear_plan<typename X::algebra_type, Target::layout, std::array<signed char, 2>{1, 1}, X::layout>;
-    return detail::evaluate<Target, plan, false>(x, x);
+    const auto e = expr::as_expression(x);
+    return Target(detail::from_components_t{}, e.template evaluate<typename Target::scalar_type, Target::layout>());
 }
 
-// ---- sums and scalars --------------------------------------------------------------------
-
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto operator+(const X& x, const Y& y) noexcept { return detail::sum<1>(x, y); }
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr auto operator-(const X& x, const Y& y) noexcept { return detail::sum<-1>(x, y); }
-template <multivector_type X>
-[[nodiscard]] constexpr X operator-(const X& x) noexcept {
-    return detail::map_components(x, [](const auto& c) { return -c; });
+// A multivector from an expression: every blade the expression can make non-zero must be in
+// the type (a compile error names the first that is not). Only the type's components are
+// computed.
+template <class Alg, class T, auto Layout>
+template <class T2, class Node, class Leaves>
+constexpr multivector<Alg, T, Layout>::multivector(const expression<Alg, T2, Node, Leaves>& e) noexcept {
+    static_assert(std::is_void_v<T2> || std::is_same_v<T, T2>,
+                  "ctga: the expression's scalar type differs from the multivector's");
+    constexpr int missing = detail::first_missing<expression<Alg, T2, Node, Leaves>::layout, Layout>();
+    if constexpr (missing >= 0) {
+        (void)sizeof(detail::target_lacks<Alg, expression<Alg, T2, Node, Leaves>::layout.masks[missing]>);
+    } else {
+        c_ = e.template evaluate<T, Layout>();
+    }
 }
 
-template <multivector_type X, detail::scalar_for<X> S>
-[[nodiscard]] constexpr X operator*(const S& s, const X& x) noexcept {
-    const typename X::scalar_type k(s);
-    return detail::map_components(x, [&](const auto& c) { return k * c; });
-}
-template <multivector_type X, detail::scalar_for<X> S>
-[[nodiscard]] constexpr X operator*(const X& x, const S& s) noexcept {
-    const typename X::scalar_type k(s);
-    return detail::map_components(x, [&](const auto& c) { return c * k; });
-}
-template <multivector_type X, detail::scalar_for<X> S>
-[[nodiscard]] constexpr X operator/(const X& x, const S& s) noexcept {
-    const typename X::scalar_type k(s);
-    return detail::map_components(x, [&](const auto& c) { return c / k; });
-}
-template <multivector_type X, detail::scalar_for<X> S>
-[[nodiscard]] constexpr auto operator+(const X& x, const S& s) noexcept { return x + detail::scalar_mv<X>(s); }
-template <multivector_type X, detail::scalar_for<X> S>
-[[nodiscard]] constexpr auto operator+(const S& s, const X& x) noexcept { return detail::scalar_mv<X>(s) + x; }
-template <multivector_type X, detail::scalar_for<X> S>
-[[nodiscard]] constexpr auto operator-(const X& x, const S& s) noexcept { return x - detail::scalar_mv<X>(s); }
-template <multivector_type X, detail::scalar_for<X> S>
-[[nodiscard]] constexpr auto operator-(const S& s, const X& x) noexcept { return detail::scalar_mv<X>(s) - x; }
+template <class Alg, class T, auto Layout>
+template <auto L2>
+constexpr multivector<Alg, T, Layout>::multivector(const multivector<Alg, T, L2>& x) noexcept
+    : multivector(expr::as_expression(x)) {}
 
-// Equal when every blade has the same coefficient (absent blades count as zero).
-template <multivector_type X, multivector_type Y>
-[[nodiscard]] constexpr bool operator==(const X& x, const Y& y) noexcept {
-    detail::check_same_algebra_and_scalar<X, Y>();
-    using T = typename X::scalar_type;
-    auto coefficient = [](const auto& m, blade_mask b) -> T {
-        const int i = m.layout.index_of(b);
-        if (i < 0) return T{};
-        return m.layout.signs[i] > 0 ? m[i] : T(-m[i]);
-    };
-    constexpr auto all = layout_union<X::layout, Y::layout>;
-    for (blade_mask b : all.masks)
-        if (!(coefficient(x, b) == coefficient(y, b))) return false;
-    return true;
+// The coefficient of a blade named as written, computing that component only.
+template <fixed_string Name, class Alg, class T, class Node, class Leaves>
+[[nodiscard]] constexpr auto get(const expression<Alg, T, Node, Leaves>& e) noexcept {
+    return e.template get<Name>();
 }
 
 // The scalar (grade-0) coefficient.
-template <multivector_type X>
+template <operand X>
 [[nodiscard]] constexpr auto scalar_part(const X& x) noexcept { return x.template get<"1">(); }
+
+// Equal when every blade has the same coefficient (absent blades count as zero).
+template <operand X, operand Y>
+[[nodiscard]] constexpr bool operator==(const X& x, const Y& y) noexcept {
+    const auto a = eval(x);
+    const auto b = eval(y);
+    using A = decltype(a);
+    using B = decltype(b);
+    static_assert(std::is_same_v<typename A::algebra_type, typename B::algebra_type>,
+                  "ctga: the operands belong to different algebras");
+    using T = typename A::scalar_type;
+    auto coefficient = [](const auto& m, blade_mask blade) -> T {
+        const int i = m.layout.index_of(blade);
+        if (i < 0) return T{};
+        return m.layout.signs[i] > 0 ? T(m[i]) : T(-m[i]);
+    };
+    constexpr auto all = layout_union<A::layout, B::layout>;
+    for (blade_mask blade : all.masks)
+        if (!(coefficient(a, blade) == coefficient(b, blade))) return false;
+    return true;
+}
+
+// ---- formulas, costs, proofs ---------------------------------------------------------------
+
+namespace expr {
+// Argument I of a formula whose I-th argument has type A.
+template <std::size_t I, class A>
+constexpr auto placeholder() noexcept {
+    using D = std::remove_cvref_t<A>;
+    return make_expression<typename D::algebra_type, typename D::scalar_type, arg<I, D::layout>>(hana::make_tuple());
+}
+
+template <class F, class... Args>
+constexpr auto call_with_placeholders(const F& f) noexcept {
+    return [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return f(placeholder<I, std::tuple_element_t<I, std::tuple<Args...>>>()...);
+    }(std::index_sequence_for<Args...>{});
+}
+template <class F, class... Args>
+using formula_result = decltype(call_with_placeholders<F, Args...>(std::declval<const F&>()));
+}  // namespace expr
+
+// An expression with named arguments: f(args...) is a lazy expression in which each argument
+// is one leaf wherever the formula uses it, so the normal form sees repeated arguments cancel.
+template <class F>
+struct formula_t {
+    F f;
+
+    template <operand... Args>
+    [[nodiscard]] constexpr auto operator()(Args&&... args) const noexcept {
+        auto body = expr::call_with_placeholders<F, Args...>(f);
+        using B = decltype(body);
+        using first = std::remove_cvref_t<std::tuple_element_t<0, std::tuple<Args...>>>;
+        using node = expr::bind_t<typename B::node_type, sizeof...(Args)>;
+        auto arg_leaves = hana::make_tuple([&]<class A>(A&& a) {
+            using D = std::remove_cvref_t<A>;
+            if constexpr (std::is_lvalue_reference_v<A>) return expr::ref_leaf<D>{&a};
+            else return expr::value_leaf<D>{std::move(a)};
+        }(std::forward<Args>(args))...);
+        return expr::make_expression<typename first::algebra_type, typename first::scalar_type, node>(
+            hana::concat(std::move(arg_leaves), std::move(body.leaves)));
+    }
+};
+
+template <class F>
+[[nodiscard]] constexpr formula_t<F> formula(F f) noexcept {
+    return {f};
+}
+
+// Multiplications and additions of the code an expression type runs when evaluated into
+// Target's blades (its own canonical blades by default), intermediates included.
+template <class E, class Target = void>
+inline constexpr expr::cost cost_of = [] {
+    using D = std::remove_cvref_t<E>;
+    if constexpr (std::is_void_v<Target>) return expr::program<typename D::node_type, D::layout>::price;
+    else return expr::program<typename D::node_type, Target::layout>::price;
+}();
+
+// True when f and g agree for all values of arguments of types Args: their fully expanded
+// normal forms are equal term by term. A compile-time proof:
+//   static_assert(ctga::identical<screw, screw>(lhs, rhs));
+template <class... Args, class F, class G>
+[[nodiscard]] consteval bool identical(F, G) {
+    using nf = expr::traits<expr::bind_t<typename expr::formula_result<F, Args...>::node_type, sizeof...(Args)>,
+                            expr::staging::never>;
+    using ng = expr::traits<expr::bind_t<typename expr::formula_result<G, Args...>::node_type, sizeof...(Args)>,
+                            expr::staging::never>;
+    static_assert(nf::complete && ng::complete,
+                  "ctga: identical<>: an expression is too large to expand (maximum degree or expansion budget)");
+    constexpr auto& a = nf::terms;
+    constexpr auto& b = ng::terms;
+    if (a.size() != b.size()) return false;
+    for (std::size_t i = 0; i < a.size(); ++i)
+        if (!expr::same_monomial(a[i], b[i]) || !(a[i].c == b[i].c)) return false;
+    return true;
+}
 
 }  // namespace ctga

@@ -8,6 +8,7 @@
 #include <array>
 #include <bit>
 #include <cstddef>
+#include <cstdint>
 
 #include "ctga/algebra/blade.hpp"
 
@@ -19,6 +20,7 @@ inline constexpr signed_blade zero{0, 0};
 // the sign), then contract equal neighbours to their square. A square 0 kills the term.
 template <class Alg>
 struct geometric {
+    static constexpr std::uint64_t id = 1;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         int sign = reorder_sign(a, b);
         for (blade_mask common = a & b; common != 0 && sign != 0; common &= common - 1)
@@ -30,6 +32,7 @@ struct geometric {
 // Exterior product: the geometric product of blades with no common generator, else 0.
 template <class Alg>
 struct exterior {
+    static constexpr std::uint64_t id = 2;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (a & b) ? zero : signed_blade{a | b, reorder_sign(a, b)};
     }
@@ -38,6 +41,7 @@ struct exterior {
 // Left contraction a ⌋ b: the grade gr(b) − gr(a) part of ab, non-zero only when a ⊆ b.
 template <class Alg>
 struct left_contraction {
+    static constexpr std::uint64_t id = 3;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (a & ~b) ? zero : geometric<Alg>::apply(a, b);
     }
@@ -46,6 +50,7 @@ struct left_contraction {
 // Right contraction a ⌊ b: the grade gr(a) − gr(b) part of ab, non-zero only when b ⊆ a.
 template <class Alg>
 struct right_contraction {
+    static constexpr std::uint64_t id = 4;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (b & ~a) ? zero : geometric<Alg>::apply(a, b);
     }
@@ -54,6 +59,7 @@ struct right_contraction {
 // Scalar product: the grade-0 part of ab.
 template <class Alg>
 struct scalar {
+    static constexpr std::uint64_t id = 5;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (a != b) ? zero : geometric<Alg>::apply(a, b);
     }
@@ -68,6 +74,7 @@ struct scalar {
 // pseudoscalar inverse: valid in degenerate algebras such as Cl(0,6,2).
 template <class Alg>
 struct regressive {
+    static constexpr std::uint64_t id = 6;
     static constexpr signed_blade apply(blade_mask b, blade_mask c) noexcept {
         constexpr blade_mask all = Alg::pseudoscalar_mask;
         if ((b | c) != all) return zero;
@@ -82,23 +89,27 @@ struct regressive {
 // Reverse: a grade-k blade picks up (−1)^(k(k−1)/2).
 template <class Alg>
 struct reverse {
+    static constexpr std::uint64_t id = 11;
     static constexpr signed_blade apply(blade_mask a) noexcept { return {a, reverse_sign(blade_grade(a))}; }
 };
 
 // Grade involution: every generator negated, (−1)^k.
 template <class Alg>
 struct involute {
+    static constexpr std::uint64_t id = 12;
     static constexpr signed_blade apply(blade_mask a) noexcept { return {a, involute_sign(blade_grade(a))}; }
 };
 
 // Clifford conjugation, the paper's `*`: reverse of the grade involution, (−1)^(k(k+1)/2).
 template <class Alg>
 struct conjugate {
+    static constexpr std::uint64_t id = 13;
     static constexpr signed_blade apply(blade_mask a) noexcept { return {a, conjugate_sign(blade_grade(a))}; }
 };
 
 template <class Alg, int K>
 struct grade_projection {
+    static constexpr std::uint64_t id = 100 + K;
     static constexpr signed_blade apply(blade_mask a) noexcept { return blade_grade(a) == K ? signed_blade{a, 1} : zero; }
 };
 
@@ -106,6 +117,7 @@ struct grade_projection {
 //   a ∧ right_complement(a) = I   and   left_complement(a) ∧ a = I.
 template <class Alg>
 struct right_complement {
+    static constexpr std::uint64_t id = 14;
     static constexpr signed_blade apply(blade_mask a) noexcept {
         const blade_mask c = Alg::pseudoscalar_mask & ~a;
         return {c, reorder_sign(a, c)};
@@ -114,6 +126,7 @@ struct right_complement {
 
 template <class Alg>
 struct left_complement {
+    static constexpr std::uint64_t id = 15;
     static constexpr signed_blade apply(blade_mask a) noexcept {
         const blade_mask c = Alg::pseudoscalar_mask & ~a;
         return {c, reorder_sign(c, a)};
@@ -124,6 +137,11 @@ struct left_complement {
 // squares agree, checked by the caller). A blade's image is the word of images, re-sorted.
 template <class Alg, std::array<int, Alg::dimension> Perm>
 struct permutation {
+    static constexpr std::uint64_t id = [] {
+        std::uint64_t h = 1000;
+        for (int p : Perm) h = h * 31 + static_cast<std::uint64_t>(p);
+        return h;
+    }();
     static constexpr signed_blade apply(blade_mask a) noexcept {
         blade_mask image = 0;
         int sign = 1;
@@ -135,6 +153,30 @@ struct permutation {
         }
         return {image, sign};
     }
+};
+
+// The coefficient of one blade as a scalar: blade Mask (orientation Sign as written) → 1.
+template <class Alg, blade_mask Mask, int Sign>
+struct coefficient {
+    static constexpr std::uint64_t id = 5000 + Mask * 2 + (Sign > 0);
+    static constexpr signed_blade apply(blade_mask a) noexcept { return a == Mask ? signed_blade{0, Sign} : zero; }
+};
+
+// The parameterised rules as templates of the algebra alone, for the expression nodes.
+template <int K>
+struct grade_projection_of {
+    template <class Alg>
+    using rule = grade_projection<Alg, K>;
+};
+template <auto Perm>
+struct permutation_of {
+    template <class Alg>
+    using rule = permutation<Alg, Perm>;
+};
+template <blade_mask Mask, int Sign>
+struct coefficient_of {
+    template <class Alg>
+    using rule = coefficient<Alg, Mask, Sign>;
 };
 
 }  // namespace ctga::rules

@@ -67,6 +67,8 @@ class multivector;
 namespace detail {
 template <class Alg, fixed_string... Names>
 struct named_layout_of;  // multivector.hpp
+template <class Alg, fixed_string Name>
+struct basis_constant;  // expr/expression.hpp
 }
 
 enum class blade_name_status { ok, unknown_generator, repeated_generator };
@@ -114,6 +116,12 @@ public:
     [[nodiscard]] static constexpr mv<T, Name> blade(T coef = T(1)) noexcept {
         return mv<T, Name>{coef};
     }
+
+    // The named blade as an exact compile-time constant (coefficient 1, orientation as written):
+    // the paper's invariants A = basis<"a1a2a3a">, E = basis<"e1e2e3e">. Products with it cost
+    // no multiplication.
+    template <fixed_string Name>
+    static constexpr auto basis = detail::basis_constant<algebra, Name>::value;
 
     // Generator I (0-based, in the declared order) as a grade-1 multivector.
     template <std::size_t I, class T = double>

@@ -1,0 +1,258 @@
+// Lazy expressions. Every operation of the core on multivectors builds an expression: a
+// symbolic node type (nodes.hpp) and the data of its leaves, held in a Boost.Hana tuple
+// (a reference to each lvalue operand, a copy of each temporary, runtime scalars by value).
+// Nothing is computed until the expression is assigned to a multivector type, a component is
+// asked for, or eval() is called; then the whole expression is one straight-line program
+// (program.hpp) for exactly the components wanted.
+//
+// Leaves of a plain expression are numbered left to right: writing s twice gives two leaves, and
+// the normal form cannot see that they are equal. A formula names its arguments, so the same
+// argument is the same leaf wherever it appears and cancellations across the expression are
+// found:
+//
+//   constexpr auto bracket = ctga::formula([](auto a, auto b) { return ctga::half * (a * b - b * a); });
+//   screw r = bracket(s1, s2);      // 18 multiplications, the cross-product form
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include <boost/hana/concat.hpp>
+#include <boost/hana/length.hpp>
+#include <boost/hana/tuple.hpp>
+#include <boost/hana/unpack.hpp>
+
+#include "ctga/algebra/multivector.hpp"
+#include "ctga/algebra/products.hpp"
+#include "ctga/expr/nodes.hpp"
+#include "ctga/expr/program.hpp"
+#include "ctga/expr/rational.hpp"
+
+namespace ctga {
+
+namespace hana = boost::hana;
+
+// ---- leaves ---------------------------------------------------------------------------------
+
+namespace expr {
+
+template <class X>
+struct ref_leaf {  // an lvalue multivector, by address
+    const X* p;
+    constexpr const auto* data() const noexcept { return p->data(); }
+};
+template <class X>
+struct value_leaf {  // a temporary multivector, by value
+    X v;
+    constexpr const auto* data() const noexcept { return v.data(); }
+};
+template <class T>
+struct scalar_leaf {  // a runtime scalar
+    T v;
+    constexpr const T* data() const noexcept { return &v; }
+};
+
+// Renaming the leaves of a node tree: Map::on_leaf<I, L> and Map::on_arg<I, L> give each leaf's
+// new node; interior nodes are rebuilt around their renamed children.
+template <class N, class Map>
+struct relabel { using type = N; };  // constants
+template <class N, class Map>
+using relabel_t = typename relabel<N, Map>::type;
+template <std::size_t I, auto L, class M>
+struct relabel<leaf<I, L>, M> { using type = typename M::template on_leaf<I, L>; };
+template <std::size_t I, auto L, class M>
+struct relabel<arg<I, L>, M> { using type = typename M::template on_arg<I, L>; };
+template <class R, class X, class Y, class M>
+struct relabel<product<R, X, Y>, M> { using type = product<R, relabel_t<X, M>, relabel_t<Y, M>>; };
+template <class R, class X, class M>
+struct relabel<map<R, X>, M> { using type = map<R, relabel_t<X, M>>; };
+template <class X, class Y, int S, class M>
+struct relabel<sum<X, Y, S>, M> { using type = sum<relabel_t<X, M>, relabel_t<Y, M>, S>; };
+template <rational Q, class X, class M>
+struct relabel<scaled<Q, X>, M> { using type = scaled<Q, relabel_t<X, M>>; };
+
+// The right operand of a combination: its data leaves numbered after the left operand's.
+template <std::size_t Off>
+struct shift_by {
+    template <std::size_t I, auto L>
+    using on_leaf = leaf<I + Off, L>;
+    template <std::size_t I, auto L>
+    using on_arg = arg<I, L>;
+};
+template <class N, std::size_t Off>
+using shift_t = relabel_t<N, shift_by<Off>>;
+
+// Binding a formula: argument I becomes leaf I, the formula's own data leaves follow them.
+template <std::size_t Arity>
+struct bind_arguments {
+    template <std::size_t I, auto L>
+    using on_leaf = leaf<I + Arity, L>;
+    template <std::size_t I, auto L>
+    using on_arg = leaf<I, L>;
+};
+template <class N, std::size_t Arity>
+using bind_t = relabel_t<N, bind_arguments<Arity>>;
+
+}  // namespace expr
+
+// ---- the expression type --------------------------------------------------------------------
+
+// T is void for compile-time constants until they meet a runtime value.
+template <class Alg, class T, class Node, class Leaves>
+class expression {
+public:
+    using algebra_type = Alg;
+    using scalar_type = T;
+    using node_type = Node;
+    using leaves_type = Leaves;
+    static constexpr std::size_t leaf_count = decltype(hana::length(std::declval<Leaves>()))::value;
+    // the blades the expression can make non-zero, canonical
+    static constexpr auto layout = expr::node_layout<Node>;
+    [[nodiscard]] static constexpr std::size_t size() noexcept { return layout.size(); }
+
+    Leaves leaves;
+
+    // The components of target layout TL (blades of the expression outside TL are not computed).
+    template <class U, auto TL>
+    [[nodiscard]] constexpr std::array<U, TL.size()> evaluate() const noexcept {
+        using program = expr::program<Node, TL>;
+        const std::array<const U*, leaf_count> pointers =
+            hana::unpack(leaves, [](const auto&... l) { return std::array<const U*, leaf_count>{l.data()...}; });
+        return expr::run<U, program, TL.size()>(pointers.data());
+    }
+
+    // The coefficient of a blade named as written; only that component is computed.
+    template <fixed_string Name>
+    [[nodiscard]] constexpr auto get() const noexcept {
+        using b = detail::blade_of<Alg, Name>;
+        constexpr ctga::layout<1> one{{b::mask}, {static_cast<signed char>(b::sign)}};
+        using U = std::conditional_t<std::is_void_v<T>, double, T>;
+        return evaluate<U, one>()[0];
+    }
+};
+
+template <class X>
+inline constexpr bool is_expression_v = false;
+template <class Alg, class T, class N, class L>
+inline constexpr bool is_expression_v<expression<Alg, T, N, L>> = true;
+
+template <class X>
+concept expression_type = is_expression_v<std::remove_cvref_t<X>>;
+
+// Anything an operator takes as a multivector operand.
+template <class X>
+concept operand = multivector_type<X> || expression_type<X>;
+
+// An exact rational constant: q<1, 2> is the paper's ½.
+template <std::int64_t N, std::int64_t D = 1>
+struct q {
+    static constexpr expr::rational value = expr::make_rational(N, D);
+};
+inline constexpr q<1, 2> half{};
+
+template <class X>
+inline constexpr bool is_rational_v = false;
+template <std::int64_t N, std::int64_t D>
+inline constexpr bool is_rational_v<q<N, D>> = true;
+
+namespace expr {
+
+template <class Alg, class T, class Node, class Leaves>
+constexpr auto make_expression(Leaves leaves) {
+    return expression<Alg, T, Node, Leaves>{std::move(leaves)};
+}
+
+// An operand as an expression: multivectors become one-leaf expressions.
+template <class X>
+constexpr auto as_expression(X&& x) noexcept {
+    using D = std::remove_cvref_t<X>;
+    if constexpr (expression_type<D>) {
+        return D(std::forward<X>(x));
+    } else if constexpr (std::is_lvalue_reference_v<X>) {
+        return make_expression<typename D::algebra_type, typename D::scalar_type, leaf<0, D::layout>>(
+            hana::make_tuple(ref_leaf<D>{&x}));
+    } else {
+        return make_expression<typename D::algebra_type, typename D::scalar_type, leaf<0, D::layout>>(
+            hana::make_tuple(value_leaf<D>{std::move(x)}));
+    }
+}
+
+template <class TX, class TY>
+using common_scalar = std::conditional_t<std::is_void_v<TX>, TY, TX>;
+
+template <class EX, class EY>
+constexpr void check_operands() {
+    static_assert(std::is_same_v<typename EX::algebra_type, typename EY::algebra_type>,
+                  "ctga: the operands belong to different algebras");
+    static_assert(std::is_void_v<typename EX::scalar_type> || std::is_void_v<typename EY::scalar_type> ||
+                      std::is_same_v<typename EX::scalar_type, typename EY::scalar_type>,
+                  "ctga: the operands have different scalar types; convert one explicitly");
+}
+
+// Node formers: what x ∘ y becomes, given the algebra and the operands' nodes.
+template <template <class> class Rule>
+struct bilinear {
+    template <class Alg, class NX, class NY>
+    using node = product<Rule<Alg>, NX, NY>;
+};
+template <int S>
+struct additive {
+    template <class Alg, class NX, class NY>
+    using node = sum<NX, NY, S>;
+};
+
+// x ∘ y: the right operand's leaves are renumbered after the left's.
+template <class Former, class X, class Y>
+constexpr auto combine(X&& x, Y&& y) noexcept {
+    auto ex = as_expression(std::forward<X>(x));
+    auto ey = as_expression(std::forward<Y>(y));
+    using EX = decltype(ex);
+    using EY = decltype(ey);
+    check_operands<EX, EY>();
+    using alg = typename EX::algebra_type;
+    using node = typename Former::template node<alg, typename EX::node_type, shift_t<typename EY::node_type, EX::leaf_count>>;
+    return make_expression<alg, common_scalar<typename EX::scalar_type, typename EY::scalar_type>, node>(
+        hana::concat(std::move(ex.leaves), std::move(ey.leaves)));
+}
+
+// A linear blade rule (Rule<Alg>) on x.
+template <template <class> class Rule, class X>
+constexpr auto apply_map(X&& x) noexcept {
+    auto ex = as_expression(std::forward<X>(x));
+    using EX = decltype(ex);
+    using alg = typename EX::algebra_type;
+    return make_expression<alg, typename EX::scalar_type, map<Rule<alg>, typename EX::node_type>>(std::move(ex.leaves));
+}
+
+template <rational Q, class X>
+constexpr auto apply_scale(X&& x) noexcept {
+    auto ex = as_expression(std::forward<X>(x));
+    using EX = decltype(ex);
+    return make_expression<typename EX::algebra_type, typename EX::scalar_type, scaled<Q, typename EX::node_type>>(
+        std::move(ex.leaves));
+}
+
+// A runtime scalar as a one-leaf expression of the scalar blade.
+inline constexpr layout<1> scalar_blade{{0}, {1}};
+
+template <class Alg, class T>
+constexpr auto scalar_expression(const T& value) noexcept {
+    return make_expression<Alg, T, leaf<0, scalar_blade>>(hana::make_tuple(scalar_leaf<T>{value}));
+}
+
+}  // namespace expr
+
+namespace detail {
+template <class Alg, fixed_string Name>
+struct basis_constant {
+    using b = blade_of<Alg, Name>;
+    static constexpr layout<1> one{{b::mask}, {static_cast<signed char>(b::sign)}};
+    static constexpr auto value = expr::make_expression<Alg, void, expr::constant<one, std::array<expr::rational, 1>{{{1, 1}}}>>(
+        hana::make_tuple());
+};
+}  // namespace detail
+
+}  // namespace ctga

@@ -178,6 +178,32 @@ static_assert(identical<scalar, scalar, scalar, scalar, scalar>(
                   }),
               "identity 7: the paper's translated inertia, term by term");
 
+// 7. In general, for a translation g = 1 + ½(tx e1e + ty e2e + tz e3e) (R = 1 in H of §2), through
+// A ∨ (· ∧ s): the momentum H^{-T} N6 H^{-1} s = (d∘ω + m t × (v − t × ω), m (v − t × ω)).
+// (A rotation needs g g* = 1, a constraint no polynomial identity can assume: issue 4 checks
+// rotations against the 6×6 formalism numerically.)
+static_assert(identical<screw, scalar, scalar, scalar, scalar, scalar, scalar, scalar>(
+                  [](auto s, auto tx, auto ty, auto tz, auto dx, auto dy, auto dz, auto m) {
+                      const auto g = G::basis<"1"> + half * (tx * G::basis<"e1e"> + ty * G::basis<"e2e"> + tz * G::basis<"e3e">);
+                      const auto gg = g * bar(g);
+                      return A & ((gg * diagonal_inertia(dx, dy, dz, m) * conj(gg)) ^ s);
+                  },
+                  [](auto s, auto tx, auto ty, auto tz, auto dx, auto dy, auto dz, auto m) {
+                      const auto wx = c<"e2e3">(s);
+                      const auto wy = c<"e3e1">(s);
+                      const auto wz = c<"e1e2">(s);
+                      // u = v − t × ω, the velocity of the body's reference point
+                      const auto ux = c<"e1e">(s) - (ty * wz - tz * wy);
+                      const auto uy = c<"e2e">(s) - (tz * wx - tx * wz);
+                      const auto uz = c<"e3e">(s) - (tx * wy - ty * wx);
+                      // l = d∘ω + m t × u, p = m u
+                      return (dx * wx + m * (ty * uz - tz * uy)) * G::basis<"a1a"> +
+                             (dy * wy + m * (tz * ux - tx * uz)) * G::basis<"a2a"> +
+                             (dz * wz + m * (tx * uy - ty * ux)) * G::basis<"a3a"> +
+                             m * (ux * G::basis<"a2a3"> + uy * G::basis<"a3a1"> + uz * G::basis<"a1a2">);
+                  }),
+              "identity 7: a translated inertia through A ∨ (· ∧ s) is the 6×6 momentum H^{-T} N6 H^{-1} s");
+
 // 8. [s1, s2] = ½(s1 s2 − s2 s1) = (ω1 × ω2, ω1 × v2 − ω2 × v1)
 static_assert(identical<screw4, screw4>(lie_bracket.f,
                                         [](auto a, auto b) {

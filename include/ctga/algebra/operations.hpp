@@ -342,9 +342,9 @@ inline constexpr expr::cost cost_of = [] {
 template <class... Args, class F, class G>
 [[nodiscard]] consteval bool identical(F, G) {
     using nf = expr::traits<expr::bind_t<typename expr::formula_result<F, Args...>::node_type, sizeof...(Args)>,
-                            expr::staging::never>;
+                            expr::staging::proof>;
     using ng = expr::traits<expr::bind_t<typename expr::formula_result<G, Args...>::node_type, sizeof...(Args)>,
-                            expr::staging::never>;
+                            expr::staging::proof>;
     static_assert(nf::complete && ng::complete,
                   "ctga: identical<>: an expression is too large to expand (maximum degree or expansion budget)");
     constexpr auto& a = nf::terms;

@@ -43,8 +43,10 @@ struct scaled {};
 
 // Expansion past this many term pairs in one product node is not attempted: it stages.
 inline constexpr std::size_t term_budget = 4096;
-// Full expansion (the result's type, and proofs) is attempted up to this many term pairs.
+// Full expansion is attempted up to this many term pairs per node: for a result's blades, and
+// (larger) for a proof.
 inline constexpr std::size_t expansion_budget = 2048;
+inline constexpr std::size_t proof_budget = 65536;
 
 template <class... Ts>
 struct type_list {};
@@ -77,9 +79,10 @@ constexpr bool trivial(const std::array<term, N>& t) {
     return true;
 }
 
-// Staging policy: cost-driven (evaluation) or never (full expansion, for proofs: two
-// expressions are equal for all inputs iff their fully expanded normal forms are equal).
-enum class staging { by_cost, never };
+// Staging policy: cost-driven (evaluation), or none: full expansion, for the blades of a result
+// (within expansion_budget) and for proofs (within proof_budget: two expressions are equal for
+// all inputs iff their fully expanded normal forms are equal).
+enum class staging { by_cost, never, proof };
 
 template <class Node, staging P = staging::by_cost>
 struct traits;
@@ -209,10 +212,12 @@ constexpr bool cheaper(bool a_valid, bool b_valid) {
 
 // Full expansion: the children's expanded normal forms multiplied out. Where the cost-driven
 // normal form staged nothing below this node it is already the full expansion, and is reused.
-template <class Rule, class X, class Y>
-struct traits<product<Rule, X, Y>, staging::never> {
-    using x = traits<X, staging::never>;
-    using y = traits<Y, staging::never>;
+template <class Rule, class X, class Y, staging P>
+    requires(P != staging::by_cost)
+struct traits<product<Rule, X, Y>, P> {
+    using x = traits<X, P>;
+    using y = traits<Y, P>;
+    static constexpr std::size_t budget = P == staging::proof ? proof_budget : expansion_budget;
     using by_cost = traits<product<Rule, X, Y>>;
     static constexpr std::uint64_t hash = by_cost::hash;
     // nothing staged at or below this node: the cost-driven form is the full expansion
@@ -223,7 +228,7 @@ struct traits<product<Rule, X, Y>, staging::never> {
         !reuse && std::is_same_v<decltype(typename traits<X>::staged{} + typename traits<Y>::staged{}), type_list<>> &&
         expand_option::valid;
     static constexpr bool attempted = reuse || reuse_expand ||
-                                      (x::complete && y::complete && x::terms.size() * y::terms.size() <= expansion_budget);
+                                      (x::complete && y::complete && x::terms.size() * y::terms.size() <= budget);
     static constexpr auto list = [] {
         if constexpr (reuse || reuse_expand || !attempted) return term_list<1>{{}, 0, !attempted};
         else return product_terms<Rule>(x::terms, y::terms);

@@ -287,7 +287,7 @@ namespace expr {
 template <std::size_t I, class A>
 constexpr auto placeholder() noexcept {
     using D = std::remove_cvref_t<A>;
-    return make_expression<typename D::algebra_type, typename D::scalar_type, arg<I, D::layout>>(hana::make_tuple());
+    return make_expression<typename D::algebra_type, typename D::scalar_type, arg<I, D::layout>>(boost::hana::make_tuple());
 }
 
 template <class F, class... Args>
@@ -312,13 +312,13 @@ struct formula_t {
         using B = decltype(body);
         using first = std::remove_cvref_t<std::tuple_element_t<0, std::tuple<Args...>>>;
         using node = expr::bind_t<typename B::node_type, sizeof...(Args)>;
-        auto arg_leaves = hana::make_tuple([&]<class A>(A&& a) {
+        auto arg_leaves = boost::hana::make_tuple([&]<class A>(A&& a) {
             using D = std::remove_cvref_t<A>;
             if constexpr (std::is_lvalue_reference_v<A>) return expr::ref_leaf<D>{&a};
             else return expr::value_leaf<D>{std::move(a)};
         }(std::forward<Args>(args))...);
         return expr::make_expression<typename first::algebra_type, typename first::scalar_type, node>(
-            hana::concat(std::move(arg_leaves), std::move(body.leaves)));
+            boost::hana::concat(std::move(arg_leaves), std::move(body.leaves)));
     }
 };
 

@@ -33,8 +33,6 @@
 
 namespace ctga {
 
-namespace hana = boost::hana;
-
 // ---- leaves ---------------------------------------------------------------------------------
 
 namespace expr {
@@ -108,7 +106,7 @@ public:
     using scalar_type = T;
     using node_type = Node;
     using leaves_type = Leaves;
-    static constexpr std::size_t leaf_count = decltype(hana::length(std::declval<Leaves>()))::value;
+    static constexpr std::size_t leaf_count = decltype(boost::hana::length(std::declval<Leaves>()))::value;
     // the blades the expression can make non-zero, canonical
     static constexpr auto layout = expr::node_layout<Node>;
     [[nodiscard]] static constexpr std::size_t size() noexcept { return layout.size(); }
@@ -120,7 +118,7 @@ public:
     [[nodiscard]] constexpr std::array<U, TL.size()> evaluate() const noexcept {
         using program = expr::program<Node, TL>;
         const std::array<const U*, leaf_count> pointers =
-            hana::unpack(leaves, [](const auto&... l) { return std::array<const U*, leaf_count>{l.data()...}; });
+            boost::hana::unpack(leaves, [](const auto&... l) { return std::array<const U*, leaf_count>{l.data()...}; });
         return expr::run<U, program, TL.size()>(pointers.data());
     }
 
@@ -173,10 +171,10 @@ constexpr auto as_expression(X&& x) noexcept {
         return D(std::forward<X>(x));
     } else if constexpr (std::is_lvalue_reference_v<X>) {
         return make_expression<typename D::algebra_type, typename D::scalar_type, leaf<0, D::layout>>(
-            hana::make_tuple(ref_leaf<D>{&x}));
+            boost::hana::make_tuple(ref_leaf<D>{&x}));
     } else {
         return make_expression<typename D::algebra_type, typename D::scalar_type, leaf<0, D::layout>>(
-            hana::make_tuple(value_leaf<D>{std::move(x)}));
+            boost::hana::make_tuple(value_leaf<D>{std::move(x)}));
     }
 }
 
@@ -215,7 +213,7 @@ constexpr auto combine(X&& x, Y&& y) noexcept {
     using alg = typename EX::algebra_type;
     using node = typename Former::template node<alg, typename EX::node_type, shift_t<typename EY::node_type, EX::leaf_count>>;
     return make_expression<alg, common_scalar<typename EX::scalar_type, typename EY::scalar_type>, node>(
-        hana::concat(std::move(ex.leaves), std::move(ey.leaves)));
+        boost::hana::concat(std::move(ex.leaves), std::move(ey.leaves)));
 }
 
 // A linear blade rule (Rule<Alg>) on x.
@@ -240,7 +238,7 @@ inline constexpr layout<1> scalar_blade{{0}, {1}};
 
 template <class Alg, class T>
 constexpr auto scalar_expression(const T& value) noexcept {
-    return make_expression<Alg, T, leaf<0, scalar_blade>>(hana::make_tuple(scalar_leaf<T>{value}));
+    return make_expression<Alg, T, leaf<0, scalar_blade>>(boost::hana::make_tuple(scalar_leaf<T>{value}));
 }
 
 }  // namespace expr
@@ -251,7 +249,7 @@ struct basis_constant {
     using b = blade_of<Alg, Name>;
     static constexpr layout<1> one{{b::mask}, {static_cast<signed char>(b::sign)}};
     static constexpr auto value = expr::make_expression<Alg, void, expr::constant<one, std::array<expr::rational, 1>{{{1, 1}}}>>(
-        hana::make_tuple());
+        boost::hana::make_tuple());
 };
 }  // namespace detail
 

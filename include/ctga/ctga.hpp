@@ -17,3 +17,4 @@
 #include "ctga/expr/normal_form.hpp"
 #include "ctga/expr/program.hpp"
 #include "ctga/expr/rational.hpp"
+#include "ctga/mechanics/motion.hpp"

@@ -1,6 +1,6 @@
 // multivector<Alg, T, Layout>: the coefficients of exactly the blades of Layout, nothing else.
-// The blade set is part of the type, so every product's result type, and the list of
-// component products that make it, are computed by the compiler (plan.hpp).
+// The blade set is part of the type, so every expression's result type, and the code that
+// computes it, are worked out by the compiler (expr/).
 #pragma once
 
 #include <array>

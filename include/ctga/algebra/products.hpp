@@ -1,8 +1,8 @@
 // The products and involutions of the algebra, on basis blades. Every bilinear product is a
 // rule  (blade a, blade b) -> ±blade or 0, and every linear map used here (involutions, grade
-// projection, complements, automorphisms) is a rule  blade -> ±blade or 0. One plan builder
-// (plan.hpp) turns any such rule into the compile-time term list of a product of multivectors,
-// so adding a product means adding a rule here and nothing else.
+// projection, complements, automorphisms) is a rule  blade -> ±blade or 0. The expression
+// engine (expr/) multiplies normal forms through these rules, so adding a product means adding
+// a rule here and nothing else; `id` names the rule in the structural hash of expressions.
 #pragma once
 
 #include <array>

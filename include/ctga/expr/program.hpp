@@ -100,7 +100,6 @@ struct program_data {
     std::size_t term_count = 0;
     std::size_t tmp_count = 0;
     std::size_t assignment_count = 0;
-    cost price{};
 };
 
 // Assemble the program computing target layout TL from root node Root.

@@ -1,0 +1,76 @@
+// The equations of motion of a single rigid body (§6) and their solution for the acceleration.
+//
+// Newton's law dP/dt = W with P = A ∨ (N ∧ s) and dN/dt from the group action gives (§6)
+//
+//   N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E,   i.e.   A ∨ (N ∧ ṡ) = W − {s, P},   {s, P} = ½(s̄P − Ps̄),
+//
+// since ½ A ∨ ((s̄N − Ns̄) ∧ s) = {s, A ∨ (N ∧ s)} and AE ∨ c = c. The mobility M = N⁻¹ solves it:
+//
+//   ṡ = E ∨ (M ∧ (W − {s, A ∨ (N ∧ s)})).
+//
+// The same equation holds with every quantity in the fixed frame (the paper's choice: N moves
+// with the body) or every quantity in the body frame (N constant). The pose follows
+// dg/dt = ½ s g for the fixed-frame velocity s (§3), and dg/dt = ½ g s_b for the body-frame
+// velocity s_b = g* s g.
+#pragma once
+
+#include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/spatial.hpp"
+#include "ctga/mechanics/transform.hpp"
+
+namespace ctga {
+
+// A rigid body's inertia in its own frame, with what the dynamics needs precomputed once.
+template <class T = double>
+struct rigid_body {
+    mass_properties<T> mass;  // in the body frame
+    rigid_inertia<T> N;       // inertia_of(mass)
+    mobility<T> M;            // mobility_of(mass) = N⁻¹
+};
+
+template <class T>
+[[nodiscard]] constexpr rigid_body<T> make_rigid_body(const mass_properties<T>& b) noexcept {
+    return {b, inertia_of(b), mobility_of(b)};
+}
+// Checked all the way from the raw numbers.
+template <class T>
+[[nodiscard]] constexpr checked<rigid_body<T>> make_rigid_body(const T& mass, const vec3<T>& com,
+                                                               const mat3<T>& inertia_c) noexcept {
+    const auto b = make_mass_properties(mass, com, inertia_c);
+    if (!b) return {{}, b.error};
+    return {make_rigid_body(*b), input_error::none};
+}
+
+// ṡ from N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, all four quantities in one frame.
+template <class T, auto LN>
+[[nodiscard]] constexpr screw<T> acceleration(const multivector<cl062, T, LN>& N, const mobility<T>& M,
+                                              const screw<T>& s, const wrench<T>& W) noexcept {
+    const coscrew<T> P = momentum(N, s);
+    const coscrew<T> rhs = W - coadjoint(s, P);
+    return velocity(M, rhs);
+}
+
+template <class T = double>
+struct state_rate {
+    motor<T> g_dot;  // dg/dt
+    screw<T> s_dot;  // ds/dt
+};
+
+// The paper's form (§6): pose g, velocity s and wrench W in the fixed frame, the body's inertia in
+// its own frame. The inertia and mobility are moved to the fixed frame, (g ḡ) N (g ḡ)*.
+template <class T>
+[[nodiscard]] constexpr state_rate<T> fixed_frame_rates(const rigid_body<T>& body, const motor<T>& g, const screw<T>& s,
+                                                        const wrench<T>& W) noexcept {
+    const mass_properties<T> in_space = transform(map_of(g), body.mass);
+    const screw<T> s_dot = acceleration(inertia_of(in_space), mobility_of(in_space), s, W);
+    return {half * s * g, s_dot};
+}
+
+// The body-frame form: velocity s_b and wrench W_b in the body frame; N and M are constant.
+template <class T>
+[[nodiscard]] constexpr state_rate<T> body_frame_rates(const rigid_body<T>& body, const motor<T>& g, const screw<T>& s_b,
+                                                       const wrench<T>& W_b) noexcept {
+    return {half * g * s_b, acceleration(body.N, body.M, s_b, W_b)};
+}
+
+}  // namespace ctga

@@ -25,3 +25,4 @@
 #include "ctga/mechanics/linear3.hpp"
 #include "ctga/mechanics/spatial.hpp"
 #include "ctga/mechanics/transform.hpp"
+#include "ctga/mechanics/exp_log.hpp"

@@ -141,8 +141,8 @@ template <class T>
 // §5: the diagonal inertia N = dx a1ae1e + dy a2ae2e + dz a3ae3e + m (a2a3e2e3 + a3a1e3e1 + a1a2e1e2),
 // assembled directly from the paper's formula (unchecked: see make_principal_mass_properties).
 template <class T>
-[[nodiscard]] constexpr auto diagonal_inertia(const T& m, const T& dx, const T& dy, const T& dz) noexcept {
-    return eval(dx * cl062::basis<"a1ae1e"> + dy * cl062::basis<"a2ae2e"> + dz * cl062::basis<"a3ae3e"> +
+[[nodiscard]] constexpr rigid_inertia<T> diagonal_inertia(const T& m, const T& dx, const T& dy, const T& dz) noexcept {
+    return (dx * cl062::basis<"a1ae1e"> + dy * cl062::basis<"a2ae2e"> + dz * cl062::basis<"a3ae3e"> +
                 m * (cl062::basis<"a2a3e2e3"> + cl062::basis<"a3a1e3e1"> + cl062::basis<"a1a2e1e2">));
 }
 

@@ -5,8 +5,8 @@
 // (g ḡ) N (g ḡ)* on inertias and mobilities. A sandwich by a unit motor is a linear map; for
 // g = t r it is H = [[R, 0], [T R, R]] on screws (§2) and H⁻ᵀ = [[R, T R], [0, R]] on co-screws,
 // and on the elements of grade 4 it is the congruence with these (the outermorphism of the
-// sandwich, §5: h(a ∧ b)h* = (h a h*) ∧ (h b h*)). motor_map holds R and t; building it costs
-// 21m 21a, applying it to a screw or a co-screw 24m 18a, to a rigid body's inertia 73m 54a.
+// sandwich, §5: h(a ∧ b)h* = (h a h*) ∧ (h b h*)). motor_map (motion.hpp) holds R and t; building
+// it costs 21m 27a, applying it to a screw or a co-screw 24m 18a, to a rigid body's inertia 73m 54a.
 // The sandwich formulas themselves remain available (ctga::adjoint, paper:: formulas) and the
 // tests prove the two agree.
 #pragma once
@@ -18,30 +18,6 @@
 #include "ctga/mechanics/spatial.hpp"
 
 namespace ctga {
-
-// The linear map of the sandwich by a unit motor g = t r: rotation matrix R of r, translation t.
-template <class T = double>
-struct motor_map {
-    mat3<T> R{};
-    vec3<T> t{};
-};
-
-// For g = t r (§3): r = α0 + α1 e2e3 + α2 e3e1 + α3 e1e2 is the quaternion (α0, α1, α2, α3) under
-// e2e3 ↦ i, e3e1 ↦ j, e1e2 ↦ k, so R is the quaternion's rotation matrix; and g r* = t r r* = t,
-// so the translation is twice the e1e, e2e, e3e part of g r*. g must be a unit motor (renormalize).
-template <class T>
-[[nodiscard]] constexpr motor_map<T> map_of(const motor<T>& g) noexcept {
-    const T w = g[0], x = g[1], y = g[2], z = g[3];
-    const T x2 = x + x, y2 = y + y, z2 = z + z;
-    const T wx = w * x2, wy = w * y2, wz = w * z2, xx = x * x2, xy = x * y2, xz = x * z2, yy = y * y2, yz = y * z2,
-            zz = z * z2;
-    motor_map<T> out;
-    out.R = {{{T(1) - (yy + zz), xy - wz, xz + wy}, {xy + wz, T(1) - (xx + zz), yz - wx}, {xz - wy, yz + wx, T(1) - (xx + yy)}}};
-    const rotor<T> r{w, x, y, z};
-    const auto tau = project<cl031::mv<T, "e1e", "e2e", "e3e">>(g * conj(r));
-    out.t = {tau[0] + tau[0], tau[1] + tau[1], tau[2] + tau[2]};
-    return out;
-}
 
 // g s g* = H s: ω' = R ω, v' = R v + t × ω'.
 template <class T>

@@ -224,15 +224,24 @@ struct range_worst {
     [[nodiscard]] double all() const { return std::max({near_zero, middle, near_pi}); }
 };
 
-TEST_CASE("§3 exp(log(±g)) = g for motors g = t r, θ ∈ [0, π − 1e-9], |t| ≤ 1e6", "[mechanics][exp_log]") {
-    std::mt19937_64 rng(14);
-    range_worst worst;
-    int samples = 0;
+// Every round-trip case: each angle of round_trip_angles() with each magnitude, three random
+// axis/direction pairs each; f(θ, |t|, axis, direction). Returns the number of cases.
+template <class F>
+int for_each_round_trip_case(std::uint64_t seed, F f) {
+    std::mt19937_64 rng(seed);
+    int cases = 0;
     for (const double theta : round_trip_angles())
         for (const double size : magnitudes)
-            for (int rep = 0; rep < 3; ++rep) {
+            for (int rep = 0; rep < 3; ++rep, ++cases) {
                 const auto axis = random_unit<double>(rng);
-                const auto dir = random_unit<double>(rng);
+                f(theta, size, axis, random_unit<double>(rng));
+            }
+    return cases;
+}
+
+TEST_CASE("§3 exp(log(±g)) = g for motors g = t r, θ ∈ [0, π − 1e-9], |t| ≤ 1e6", "[mechanics][exp_log]") {
+    range_worst worst;
+    const int samples = for_each_round_trip_case(14, [&](double theta, double size, const auto& axis, const auto& dir) {
                 const motor<double> g = rigid_motion(translation(size * dir[0], size * dir[1], size * dir[2]),
                                                      rotation(axis[0], axis[1], axis[2], theta));
                 worst.add(theta, rel(ctga::exp(ctga::log(g)), g));
@@ -240,22 +249,15 @@ TEST_CASE("§3 exp(log(±g)) = g for motors g = t r, θ ∈ [0, π − 1e-9], |t
                 motor<double> minus_g = g;
                 for (std::size_t i = 0; i < 8; ++i) minus_g[i] = -g[i];
                 worst.add(theta, rel(ctga::exp(ctga::log(minus_g)), g));
-                ++samples;
-            }
+            });
     WARN("exp(log(±g)) = g over " << samples << " motors, worst rel: θ < 1e-3: " << worst.near_zero
                                  << ", 1e-3 ≤ θ ≤ π − 1e-3: " << worst.middle << ", θ > π − 1e-3: " << worst.near_pi);
     CHECK(worst.all() <= 1e-14);
 }
 
 TEST_CASE("§3 log(exp(z)) = z for screws with |ω| = θ ∈ [0, π − 1e-9], |v| ≤ 1e6", "[mechanics][exp_log]") {
-    std::mt19937_64 rng(15);
     range_worst worst, worst_omega;
-    int samples = 0;
-    for (const double theta : round_trip_angles())
-        for (const double size : magnitudes)
-            for (int rep = 0; rep < 3; ++rep) {
-                const auto axis = random_unit<double>(rng);
-                const auto dir = random_unit<double>(rng);
+    const int samples = for_each_round_trip_case(15, [&](double theta, double size, const auto& axis, const auto& dir) {
                 const screw<double> z = make_screw<double>({theta * axis[0], theta * axis[1], theta * axis[2]},
                                                            {size * dir[0], size * dir[1], size * dir[2]});
                 const screw<double> back = ctga::log(ctga::exp(z));
@@ -263,8 +265,7 @@ TEST_CASE("§3 log(exp(z)) = z for screws with |ω| = θ ∈ [0, π − 1e-9], |
                 // the stricter measure on ω alone (not diluted by |v|)
                 const screw<double> w{z[0], z[1], z[2], 0, 0, 0}, wb{back[0], back[1], back[2], 0, 0, 0};
                 worst_omega.add(theta, rel(wb, w));
-                ++samples;
-            }
+            });
     WARN("log(exp(z)) = z over " << samples << " screws, worst rel: θ < 1e-3: " << worst.near_zero
                                  << ", middle: " << worst.middle << ", θ > π − 1e-3: " << worst.near_pi
                                  << "; ω part alone: " << worst_omega.all());

@@ -4,7 +4,7 @@
 # CTGA_SKIP_DEPS=1 skips the check (e.g. on non-Debian systems).
 set -euo pipefail
 
-packages=(g++ cmake ninja-build libboost-dev catch2 libbenchmark-dev time)
+packages=(g++ cmake ninja-build libboost-dev catch2 libbenchmark-dev libeigen3-dev time)
 
 if [[ "${CTGA_SKIP_DEPS:-0}" == 1 ]]; then
     exit 0

@@ -19,7 +19,8 @@ enum class input_error : unsigned char {
     none,
     non_finite,             // a NaN or an infinity among the inputs
     non_positive_mass,      // m ≤ 0
-    not_positive_definite,  // a principal moment ≤ 0 (or the tensor is not symmetric)
+    not_symmetric,          // an inertia tensor with I_ij ≠ I_ji beyond rounding
+    not_positive_definite,  // a principal moment ≤ 0
     triangle_inequality,    // principal moments with I_i > I_j + I_k: no mass distribution has them
     not_a_rotation,         // the 3×3 block of a homogeneous matrix is not orthonormal with det +1
     not_homogeneous,        // the bottom row of a homogeneous matrix is not (0, 0, 0, 1)
@@ -32,8 +33,8 @@ enum class input_error : unsigned char {
         case input_error::none: return "ok";
         case input_error::non_finite: return "ctga: non-finite input (NaN or infinity)";
         case input_error::non_positive_mass: return "ctga: the mass must be positive";
-        case input_error::not_positive_definite:
-            return "ctga: the inertia tensor must be symmetric positive definite";
+        case input_error::not_symmetric: return "ctga: the inertia tensor must be symmetric";
+        case input_error::not_positive_definite: return "ctga: the inertia tensor must be positive definite";
         case input_error::triangle_inequality:
             return "ctga: the principal moments violate the triangle inequality I_i <= I_j + I_k";
         case input_error::not_a_rotation: return "ctga: the 3x3 block is not a rotation (orthonormal, det +1)";

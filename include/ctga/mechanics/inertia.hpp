@@ -51,7 +51,7 @@ constexpr input_error check(const T& m, const vec3<T>& c, const mat3<T>& I) noex
     const T tol = tolerance(I);
     for (int i = 0; i < 3; ++i)
         for (int j = i + 1; j < 3; ++j)
-            if (abs(I[i][j] - I[j][i]) > tol) return input_error::not_positive_definite;
+            if (abs(I[i][j] - I[j][i]) > tol) return input_error::not_symmetric;
     // positive definite: the leading principal minors are positive (Sylvester)
     const T m1 = I[0][0], m2 = I[0][0] * I[1][1] - I[0][1] * I[0][1];
     const T m3 = I[0][0] * (I[1][1] * I[2][2] - I[1][2] * I[1][2]) - I[0][1] * (I[0][1] * I[2][2] - I[1][2] * I[0][2]) +

@@ -169,7 +169,7 @@ double rel(Real x, Real y) { return static_cast<double>(std::abs(x - y) / std::m
 // the solution, whose equation would cancel large Coriolis terms against W).
 double motion_lhs_error(const ctga::rigid_inertia<double>& N, const ctga::screw<double>& s,
                         const ctga::screw<double>& sdot, const V6& expected) {
-    const auto lhs = ctga::eval(ctga::paper::motion_lhs(N, ctga::lift(s), ctga::lift(sdot)));
+    const auto lhs = ctga::eval(ctga::paper::motion_lhs(N, s, sdot));
     const auto rhs = ctga::eval(ctga::coscrew_from_vector6(to_double(expected)) * ctga::invariants::E);
     const auto diff = ctga::eval(lhs - rhs);
     Real worst = 0;

@@ -317,7 +317,8 @@ struct formula_t {
             if constexpr (std::is_lvalue_reference_v<A>) return expr::ref_leaf<D>{&a};
             else return expr::value_leaf<D>{std::move(a)};
         }(std::forward<Args>(args))...);
-        return expr::make_expression<typename first::algebra_type, typename first::scalar_type, node>(
+        // the body's algebra: arguments may come from a subalgebra it embeds (ctga::lift)
+        return expr::make_expression<typename B::algebra_type, typename first::scalar_type, node>(
             boost::hana::concat(std::move(arg_leaves), std::move(body.leaves)));
     }
 };

@@ -168,6 +168,14 @@ struct grade_projection_of {
     template <class Alg>
     using rule = grade_projection<Alg, K>;
 };
+// The embedding of an algebra whose generators are generators Offset… of a larger one, in the
+// same order (Cl(0,3,1) as the e-half of Cl(0,6,2), §5): blade masks shift, orientations stay.
+template <class Alg, int Offset>
+struct embedding {
+    static constexpr std::uint64_t id = 2000 + static_cast<std::uint64_t>(Offset);
+    static constexpr signed_blade apply(blade_mask a) noexcept { return {a << Offset, 1}; }
+};
+
 template <auto Perm>
 struct permutation_of {
     template <class Alg>
@@ -177,6 +185,12 @@ template <blade_mask Mask, int Sign>
 struct coefficient_of {
     template <class Alg>
     using rule = coefficient<Alg, Mask, Sign>;
+};
+
+template <int Offset>
+struct embedding_of {
+    template <class Alg>
+    using rule = embedding<Alg, Offset>;
 };
 
 }  // namespace ctga::rules

@@ -216,13 +216,15 @@ constexpr auto combine(X&& x, Y&& y) noexcept {
         boost::hana::concat(std::move(ex.leaves), std::move(ey.leaves)));
 }
 
-// A linear blade rule (Rule<Alg>) on x.
-template <template <class> class Rule, class X>
+// A linear blade rule (Rule<Alg>) on x; the result lives in Target (x's own algebra by
+// default; another one for an embedding of x's algebra into a larger one).
+template <template <class> class Rule, class Target = void, class X>
 constexpr auto apply_map(X&& x) noexcept {
     auto ex = as_expression(std::forward<X>(x));
     using EX = decltype(ex);
     using alg = typename EX::algebra_type;
-    return make_expression<alg, typename EX::scalar_type, map<Rule<alg>, typename EX::node_type>>(std::move(ex.leaves));
+    using target = std::conditional_t<std::is_void_v<Target>, alg, Target>;
+    return make_expression<target, typename EX::scalar_type, map<Rule<alg>, typename EX::node_type>>(std::move(ex.leaves));
 }
 
 template <rational Q, class X>

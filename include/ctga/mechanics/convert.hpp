@@ -40,6 +40,34 @@ constexpr bool every_entry_placed() {
     return true;
 }
 
+template <auto L, bool AsMobility>
+constexpr int index_of_entry(int row, int col) {
+    const auto table = entry_table<L, AsMobility>();
+    for (std::size_t i = 0; i < L.size(); ++i)
+        if (table[i].at.row == row && table[i].at.col == col) return static_cast<int>(i);
+    return -1;
+}
+
+// Entry (I, J) of an element read as a matrix, by a component index fixed at compile time
+// (zero when the type does not store that blade).
+template <bool AsMobility, int I, int J, class T, auto L>
+constexpr T entry_of(const multivector<cl062, T, L>& x) noexcept {
+    constexpr int k = index_of_entry<L, AsMobility>(I, J);
+    if constexpr (k < 0) {
+        return T(0);
+    } else {
+        constexpr int sign = entry_table<L, AsMobility>()[k].sign;
+        return sign > 0 ? x[k] : -x[k];
+    }
+}
+template <bool AsMobility, int I, int J, class T, auto L>
+constexpr void set_entry(multivector<cl062, T, L>& x, const T& v) noexcept {
+    constexpr int k = index_of_entry<L, AsMobility>(I, J);
+    static_assert(k >= 0, "ctga: the element's type does not store this matrix entry");
+    constexpr int sign = entry_table<L, AsMobility>()[k].sign;
+    x[k] = sign > 0 ? v : -v;
+}
+
 template <bool AsMobility, class T, auto L>
 constexpr mat6<T> to_matrix(const multivector<cl062, T, L>& x) noexcept {
     static_assert(every_entry_placed<L, AsMobility>(),

@@ -20,6 +20,7 @@
 #include <array>
 #include <cstddef>
 #include <string_view>
+#include <type_traits>
 #include <utility>
 
 #include "ctga/algebra/operations.hpp"
@@ -149,13 +150,18 @@ inline constexpr auto Q0 = cl062::basis<"a2a3e1e"> + cl062::basis<"a3a1e2e"> + c
                            cl062::basis<"a1ae2e3"> + cl062::basis<"a2ae3e1"> + cl062::basis<"a3ae1e2">;
 }  // namespace invariants
 
-// The embedding of Cl(0,3,1) in Cl(0,6,2) as the e-half, and its inverse on e-only elements.
-template <class T, auto L>
-[[nodiscard]] constexpr auto lift(const multivector<cl031, T, L>& x) noexcept {
-    multivector<cl062, T, spatial_detail::shifted_layout<L>()> out;
-    for (std::size_t i = 0; i < L.size(); ++i) out[i] = x[i];
-    return out;
+// x viewed in Cl(0,6,2): an element of Cl(0,3,1) (multivector or expression) embedded as the
+// e-half, lazily: the expression reads x's own components, nothing is copied. An element of
+// Cl(0,6,2) is returned unchanged, so the formulas below accept screws of either algebra.
+template <operand X>
+[[nodiscard]] constexpr decltype(auto) lift(X&& x) noexcept {
+    using alg = typename std::remove_cvref_t<X>::algebra_type;
+    static_assert(std::is_same_v<alg, cl031> || std::is_same_v<alg, cl062>,
+                  "ctga: lift takes an element of Cl(0,3,1) (or of Cl(0,6,2), returned unchanged)");
+    if constexpr (std::is_same_v<alg, cl062>) return std::forward<X>(x);
+    else return expr::apply_map<rules::embedding_of<spatial_detail::e_offset>::template rule, cl062>(std::forward<X>(x));
 }
+// The inverse on e-only elements of Cl(0,6,2): the same coefficients in Cl(0,3,1).
 template <class T, auto L>
 [[nodiscard]] constexpr auto lower(const multivector<cl062, T, L>& x) noexcept {
     static_assert(spatial_detail::only_e_blades<L>(),
@@ -168,7 +174,7 @@ template <class T, auto L>
 // ---- the paper's formulas, lazily (compose them; assign or eval to run) ----------------------
 //
 // Each is a ctga::formula: an argument used twice is one leaf, so cancellations are found.
-// s is a screw on the e's (lifted_screw), P a co-screw, N an inertia, M a mobility.
+// s is a screw (of Cl(0,3,1), or lifted), P a co-screw, N an inertia, M a mobility.
 namespace paper {
 using invariants::A;
 using invariants::E;
@@ -177,21 +183,25 @@ using invariants::Q0;
 // §3: the Lie bracket [s1, s2] = ½(s1 s2 − s2 s1) = (ω1×ω2, ω1×v2 − ω2×v1).
 inline constexpr auto bracket = formula([](auto s1, auto s2) { return half * (s1 * s2 - s2 * s1); });
 // §5: the evaluation P(s) = P ∨ (Q0 ∧ s) = ω·l + v·p.
-inline constexpr auto evaluation = formula([](auto P, auto s) { return P & (Q0 ^ s); });
+inline constexpr auto evaluation = formula([](auto P, auto s) { return P & (Q0 ^ lift(s)); });
 // §5: the momentum P = A ∨ (N ∧ s).
-inline constexpr auto momentum = formula([](auto N, auto s) { return A & (N ^ s); });
+inline constexpr auto momentum = formula([](auto N, auto s) { return A & (N ^ lift(s)); });
 // §5: twice the kinetic energy, 2E_k = s̄ ∨ (N ∧ s).
-inline constexpr auto twice_kinetic_energy = formula([](auto N, auto s) { return bar(s) & (N ^ s); });
+inline constexpr auto twice_kinetic_energy = formula([](auto N, auto s) { return bar(lift(s)) & (N ^ lift(s)); });
 // §6: the coadjoint action {s, P} = ½(s̄P − Ps̄) = (ω×l + v×p, ω×p).
-inline constexpr auto coadjoint = formula([](auto s, auto P) { return half * (bar(s) * P - P * bar(s)); });
+inline constexpr auto coadjoint = formula([](auto s, auto P) { return half * (bar(lift(s)) * P - P * bar(lift(s))); });
 // §6: dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄) for a body moving with velocity s.
-inline constexpr auto inertia_rate =
-    formula([](auto N, auto s) { return half * (s * N - N * s) + half * (bar(s) * N - N * bar(s)); });
+inline constexpr auto inertia_rate = formula([](auto N, auto s) {
+    const auto x = lift(s);
+    return half * (x * N - N * x) + half * (bar(x) * N - N * bar(x));
+});
 // The velocity a mobility gives a co-screw: s = E ∨ (M ∧ P).
 inline constexpr auto velocity = formula([](auto M, auto P) { return E & (M ^ P); });
 // §6: the left-hand side of N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E.
-inline constexpr auto motion_lhs = formula(
-    [](auto N, auto s, auto sdot) { return (N ^ sdot) + half * ((bar(s) * N - N * bar(s)) ^ s); });
+inline constexpr auto motion_lhs = formula([](auto N, auto s, auto sdot) {
+    const auto x = lift(s);
+    return (N ^ lift(sdot)) + half * ((bar(x) * N - N * bar(x)) ^ x);
+});
 }  // namespace paper
 
 // ---- the same, on concrete types --------------------------------------------------------------
@@ -202,23 +212,23 @@ template <class T>
 }
 template <class T>
 [[nodiscard]] constexpr T evaluation(const coscrew<T>& P, const screw<T>& s) noexcept {
-    return scalar_part(paper::evaluation(P, lift(s)));
+    return scalar_part(paper::evaluation(P, s));
 }
 template <class T, auto L>
 [[nodiscard]] constexpr coscrew<T> momentum(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
-    return paper::momentum(N, lift(s));
+    return paper::momentum(N, s);
 }
 template <class T, auto L>
 [[nodiscard]] constexpr T kinetic_energy(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
-    return scalar_part(paper::twice_kinetic_energy(N, lift(s))) / T(2);
+    return scalar_part(paper::twice_kinetic_energy(N, s)) / T(2);
 }
 template <class T>
 [[nodiscard]] constexpr coscrew<T> coadjoint(const screw<T>& s, const coscrew<T>& P) noexcept {
-    return paper::coadjoint(lift(s), P);
+    return paper::coadjoint(s, P);
 }
 template <class T, auto L>
 [[nodiscard]] constexpr inertia<T> inertia_rate(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
-    return paper::inertia_rate(N, lift(s));
+    return paper::inertia_rate(N, s);
 }
 template <class T>
 [[nodiscard]] constexpr screw<T> velocity(const mobility<T>& M, const coscrew<T>& P) noexcept {

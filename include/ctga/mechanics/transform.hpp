@@ -46,34 +46,36 @@ template <class T>
 // I_o' = R I_o Rᵀ − (t zᵀ + z tᵀ − 2 (z·t) 1)   (parallel axes: Ĉ² terms of c and of R c + t).
 template <class T>
 [[nodiscard]] constexpr rigid_inertia<T> transform(const motor_map<T>& G, const rigid_inertia<T>& N) noexcept {
-    const mat6<T> n = inertia_matrix(N);
-    const T m = n[3][3];
-    const vec3<T> h{n[2][4], n[0][5], n[1][3]};
-    const mat3<T> Io{{{n[0][0], n[0][1], n[0][2]}, {n[1][0], n[1][1], n[1][2]}, {n[2][0], n[2][1], n[2][2]}}};
+    using spatial_detail::entry_of;
+    using spatial_detail::set_entry;
+    const T m = entry_of<false, 3, 3>(N);
+    const vec3<T> h{entry_of<false, 2, 4>(N), entry_of<false, 0, 5>(N), entry_of<false, 1, 3>(N)};  // m Ĉ = Ĥ
+    const mat3<T> Io{{{entry_of<false, 0, 0>(N), entry_of<false, 0, 1>(N), entry_of<false, 0, 2>(N)},
+                      {entry_of<false, 1, 0>(N), entry_of<false, 1, 1>(N), entry_of<false, 1, 2>(N)},
+                      {entry_of<false, 2, 0>(N), entry_of<false, 2, 1>(N), entry_of<false, 2, 2>(N)}}};
     const vec3<T>& t = G.t;
     const vec3<T> y = linear3::apply(G.R, h);
     const T half_m = m / T(2);
     const vec3<T> z{y[0] + half_m * t[0], y[1] + half_m * t[1], y[2] + half_m * t[2]};
     const vec3<T> q{t[0] * z[0], t[1] * z[1], t[2] * z[2]};
-    mat3<T> I = linear3::rotate_symmetric(G.R, Io);
-    I[0][0] += T(2) * (q[1] + q[2]);
-    I[1][1] += T(2) * (q[0] + q[2]);
-    I[2][2] += T(2) * (q[0] + q[1]);
-    I[0][1] = I[1][0] = I[0][1] - (t[0] * z[1] + z[0] * t[1]);
-    I[0][2] = I[2][0] = I[0][2] - (t[0] * z[2] + z[0] * t[2]);
-    I[1][2] = I[2][1] = I[1][2] - (t[1] * z[2] + z[1] * t[2]);
+    const mat3<T> I = linear3::rotate_symmetric(G.R, Io);
     const vec3<T> h2{y[0] + m * t[0], y[1] + m * t[1], y[2] + m * t[2]};
-    mat6<T> out{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) out[i][j] = I[i][j];
-    const mat3<T> Hh = linear3::hat(h2);
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
-            out[i][3 + j] = Hh[i][j];
-            out[3 + i][j] = -Hh[i][j];
-        }
-    for (int i = 0; i < 3; ++i) out[3 + i][3 + i] = m;
-    return spatial_detail::from_matrix<false, rigid_inertia<T>>(out);
+    rigid_inertia<T> out;
+    set_entry<false, 0, 0>(out, I[0][0] + T(2) * (q[1] + q[2]));
+    set_entry<false, 1, 1>(out, I[1][1] + T(2) * (q[0] + q[2]));
+    set_entry<false, 2, 2>(out, I[2][2] + T(2) * (q[0] + q[1]));
+    const T xy = I[0][1] - (t[0] * z[1] + z[0] * t[1]), xz = I[0][2] - (t[0] * z[2] + z[0] * t[2]),
+            yz = I[1][2] - (t[1] * z[2] + z[1] * t[2]);
+    set_entry<false, 0, 1>(out, xy), set_entry<false, 1, 0>(out, xy);
+    set_entry<false, 0, 2>(out, xz), set_entry<false, 2, 0>(out, xz);
+    set_entry<false, 1, 2>(out, yz), set_entry<false, 2, 1>(out, yz);
+    // m Ĉ' = Ĥ' in the upper right, −Ĥ' in the lower left; m 1 in the mass block
+    set_entry<false, 0, 4>(out, -h2[2]), set_entry<false, 0, 5>(out, h2[1]), set_entry<false, 1, 3>(out, h2[2]);
+    set_entry<false, 1, 5>(out, -h2[0]), set_entry<false, 2, 3>(out, -h2[1]), set_entry<false, 2, 4>(out, h2[0]);
+    set_entry<false, 4, 0>(out, -h2[2]), set_entry<false, 5, 0>(out, h2[1]), set_entry<false, 3, 1>(out, h2[2]);
+    set_entry<false, 5, 1>(out, -h2[0]), set_entry<false, 3, 2>(out, -h2[1]), set_entry<false, 4, 2>(out, h2[0]);
+    set_entry<false, 3, 3>(out, m), set_entry<false, 4, 4>(out, m), set_entry<false, 5, 5>(out, m);
+    return out;
 }
 
 namespace transform_detail {

@@ -233,7 +233,7 @@ template <multivector_type Target, operand X>
 // computed.
 template <class Alg, class T, auto Layout>
 template <class T2, class Node, class Leaves>
-constexpr multivector<Alg, T, Layout>::multivector(const expression<Alg, T2, Node, Leaves>& e) noexcept {
+CTGA_ALWAYS_INLINE constexpr multivector<Alg, T, Layout>::multivector(const expression<Alg, T2, Node, Leaves>& e) noexcept {
     static_assert(std::is_void_v<T2> || std::is_same_v<T, T2>,
                   "ctga: the expression's scalar type differs from the multivector's");
     constexpr int missing = detail::first_missing<expression<Alg, T2, Node, Leaves>::layout, Layout>();

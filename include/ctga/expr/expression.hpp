@@ -115,11 +115,12 @@ public:
 
     // The components of target layout TL (blades of the expression outside TL are not computed).
     template <class U, auto TL>
-    [[nodiscard]] constexpr std::array<U, TL.size()> evaluate() const noexcept {
+    [[nodiscard]] CTGA_ALWAYS_INLINE constexpr std::array<U, TL.size()> evaluate() const noexcept {
         using program = expr::program<Node, TL>;
         const std::array<const U*, leaf_count> pointers =
             boost::hana::unpack(leaves, [](const auto&... l) { return std::array<const U*, leaf_count>{l.data()...}; });
-        return expr::run<U, program, TL.size()>(pointers.data());
+        if constexpr (program::terms.size() <= expr::inline_terms) return expr::run<U, program, TL.size()>(pointers.data());
+        else return expr::run_looped<U, program, TL.size()>(pointers.data());
     }
 
     // The coefficient of a blade named as written; only that component is computed.

@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "ctga/expr/inline.hpp"
 #include "ctga/expr/nodes.hpp"
 #include "ctga/expr/normal_form.hpp"
 
@@ -268,13 +269,13 @@ constexpr T coefficient(const rational& c) {
 }
 
 template <class T>
-constexpr T factor_value(std::uint32_t f, const T* const* leaves, const T* tmp) noexcept {
+CTGA_ALWAYS_INLINE constexpr T factor_value(std::uint32_t f, const T* const* leaves, const T* tmp) noexcept {
     return (f & tmp_flag) ? tmp[f & ~tmp_flag] : leaves[f >> leaf_shift][f & ((1u << leaf_shift) - 1)];
 }
 
 // |c| · Π factors, the sign left to the caller (a subtraction instead of a negation).
 template <class T>
-constexpr T term_magnitude(const op_term& o, const T* const* leaves, const T* tmp) noexcept {
+CTGA_ALWAYS_INLINE constexpr T term_magnitude(const op_term& o, const T* const* leaves, const T* tmp) noexcept {
     if (o.degree == 0) return coefficient<T>(o.c);
     T v = factor_value<T>(o.f[0], leaves, tmp);
     CTGA_UNROLL_TERMS
@@ -286,7 +287,7 @@ constexpr T term_magnitude(const op_term& o, const T* const* leaves, const T* tm
 // Assignment A of program P: its terms summed from the first (not from zero: x + 0.0 is not x
 // for x = −0.0, so a zero start would cost an addition the compiler may not remove).
 template <class T, class P, std::size_t A>
-constexpr T assignment(const T* const* leaves, const T* tmp) noexcept {
+CTGA_ALWAYS_INLINE constexpr T assignment(const T* const* leaves, const T* tmp) noexcept {
     constexpr std::uint32_t begin = P::offsets[A];
     constexpr std::uint32_t end = P::offsets[A + 1];
     if constexpr (begin == end) {
@@ -310,22 +311,47 @@ constexpr T assignment(const T* const* leaves, const T* tmp) noexcept {
 
 // Run program P on the leaves' storage: the temporaries in order, then the N outputs.
 template <class T, class P, std::size_t... A>
-constexpr void run_temporaries([[maybe_unused]] T* tmp, [[maybe_unused]] const T* const* leaves,
+CTGA_ALWAYS_INLINE constexpr void run_temporaries([[maybe_unused]] T* tmp, [[maybe_unused]] const T* const* leaves,
                                                      std::index_sequence<A...>) noexcept {
     ((tmp[A] = assignment<T, P, A>(leaves, tmp)), ...);
 }
 
 template <class T, class P, std::size_t N, std::size_t... R>
-constexpr std::array<T, N> run_outputs([[maybe_unused]] const T* tmp, [[maybe_unused]] const T* const* leaves,
+CTGA_ALWAYS_INLINE constexpr std::array<T, N> run_outputs([[maybe_unused]] const T* tmp, [[maybe_unused]] const T* const* leaves,
                                                               std::index_sequence<R...>) noexcept {
     return std::array<T, N>{assignment<T, P, P::tmp_count + R>(leaves, tmp)...};
 }
 
 template <class T, class P, std::size_t N>
-constexpr std::array<T, N> run(const T* const* leaves) noexcept {
+CTGA_ALWAYS_INLINE constexpr std::array<T, N> run(const T* const* leaves) noexcept {
     std::array<T, (P::tmp_count > 0 ? P::tmp_count : 1)> tmp{};
     run_temporaries<T, P>(tmp.data(), leaves, std::make_index_sequence<P::tmp_count>{});
     return run_outputs<T, P, N>(tmp.data(), leaves, std::make_index_sequence<N>{});
+}
+
+// Up to this many terms a program runs as the unrolled straight-line code above, inlined into
+// the caller (always: left to its heuristics GCC stops inlining inside a large caller, a whole
+// equation of motion, and calls term_magnitude once per term). A larger program runs as one
+// loop over its constexpr terms in a function of its own: unrolling thousands of terms into the
+// caller made the property suites' build three times as long (toolchain.md: a 256×256 product
+// took 120 s unrolled against 11 s as a loop).
+inline constexpr std::size_t inline_terms = 64;
+
+template <class T, class P, std::size_t N>
+[[gnu::noinline]] constexpr std::array<T, N> run_looped(const T* const* leaves) noexcept {
+    std::array<T, (P::tmp_count > 0 ? P::tmp_count : 1)> tmp{};
+    std::array<T, N> out{};
+    for (std::size_t a = 0; a < P::tmp_count + N; ++a) {
+        T acc{};
+        for (std::uint32_t t = P::offsets[a]; t < P::offsets[a + 1]; ++t) {
+            const op_term& o = P::terms[t];
+            const T v = term_magnitude<T>(o, leaves, tmp.data());
+            if (t == P::offsets[a]) acc = o.c.num < 0 ? T(-v) : v;  // from the first term, as above
+            else acc = o.c.num < 0 ? acc - v : acc + v;
+        }
+        (a < P::tmp_count ? tmp[a] : out[a - P::tmp_count]) = acc;
+    }
+    return out;
 }
 
 }  // namespace ctga::expr

@@ -43,7 +43,7 @@ template <class T>
 
 // ṡ from N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, all four quantities in one frame.
 template <class T, auto LN>
-[[nodiscard]] constexpr screw<T> acceleration(const multivector<cl062, T, LN>& N, const mobility<T>& M,
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> acceleration(const multivector<cl062, T, LN>& N, const mobility<T>& M,
                                               const screw<T>& s, const wrench<T>& W) noexcept {
     const coscrew<T> P = momentum(N, s);
     const coscrew<T> rhs = W - coadjoint(s, P);

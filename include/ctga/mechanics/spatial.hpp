@@ -25,6 +25,7 @@
 
 #include "ctga/algebra/operations.hpp"
 #include "ctga/algebras.hpp"
+#include "ctga/expr/inline.hpp"
 #include "ctga/mechanics/motion.hpp"
 
 namespace ctga {
@@ -205,33 +206,34 @@ inline constexpr auto motion_lhs = formula([](auto N, auto s, auto sdot) {
 }  // namespace paper
 
 // ---- the same, on concrete types --------------------------------------------------------------
+// Thin wrappers over the formulas, always inlined: each is a few lines of straight-line code.
 
 template <class T>
-[[nodiscard]] constexpr screw<T> bracket(const screw<T>& s1, const screw<T>& s2) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> bracket(const screw<T>& s1, const screw<T>& s2) noexcept {
     return paper::bracket(s1, s2);
 }
 template <class T>
-[[nodiscard]] constexpr T evaluation(const coscrew<T>& P, const screw<T>& s) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr T evaluation(const coscrew<T>& P, const screw<T>& s) noexcept {
     return scalar_part(paper::evaluation(P, s));
 }
 template <class T, auto L>
-[[nodiscard]] constexpr coscrew<T> momentum(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr coscrew<T> momentum(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
     return paper::momentum(N, s);
 }
 template <class T, auto L>
-[[nodiscard]] constexpr T kinetic_energy(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr T kinetic_energy(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
     return scalar_part(paper::twice_kinetic_energy(N, s)) / T(2);
 }
 template <class T>
-[[nodiscard]] constexpr coscrew<T> coadjoint(const screw<T>& s, const coscrew<T>& P) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr coscrew<T> coadjoint(const screw<T>& s, const coscrew<T>& P) noexcept {
     return paper::coadjoint(s, P);
 }
 template <class T, auto L>
-[[nodiscard]] constexpr inertia<T> inertia_rate(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr inertia<T> inertia_rate(const multivector<cl062, T, L>& N, const screw<T>& s) noexcept {
     return paper::inertia_rate(N, s);
 }
 template <class T>
-[[nodiscard]] constexpr screw<T> velocity(const mobility<T>& M, const coscrew<T>& P) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> velocity(const mobility<T>& M, const coscrew<T>& P) noexcept {
     return lower(lifted_screw<T>(paper::velocity(M, P)));
 }
 

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# The benchmark suite, its instruction counts and its report:
+#   bash tools/bench.sh
+# builds ctga_bench (Release), runs every <operation>/<implementation> 5 times (medians), counts
+# the instructions of one call of each ctga, spatial and Eigen kernel with callgrind, and renders
+# docs/benchmarks.md with docs/img/benchmarks.svg. The compile-time tables come from
+# tools/compile-cost.sh when it has been run (its fragment in $BUILD_DIR/bench/).
+# BUILD_DIR overrides the build tree (default build/). Run it on a quiet machine.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+cd "$root"
+export BUILD_DIR=${BUILD_DIR:-$root/build}
+
+bash tools/deps.sh valgrind python3-matplotlib
+bash tools/configure.sh
+cmake --build "$BUILD_DIR" --target ctga_bench -j"$(nproc)"
+out=$BUILD_DIR/bench
+mkdir -p "$out" docs/img
+
+"$out/ctga_bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_min_time=0.2 \
+    --benchmark_out="$out/results.json" --benchmark_out_format=json
+
+# instructions of one call: callgrind counts inside the kernel only (--toggle-collect)
+operations=(momentum energy bracket coadjoint motor_product screw_transform coscrew_transform inertia_transform eom step)
+calls=1000
+: >"$out/instructions.txt"
+for op in "${operations[@]}"; do
+    for impl in ctga spatial eigen; do
+        total=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null \
+            --toggle-collect="bench::$op(bench::${impl}_inputs const&)" \
+            "$out/ctga_bench" --repeat "$op/$impl" "$calls" 2>&1 | awk '/Collected/ {print $4}')
+        echo "$op $impl $((total / calls))" >>"$out/instructions.txt"
+    done
+done
+
+/usr/bin/python3 tools/render_benchmarks.py "$out/results.json" "$out/instructions.txt" \
+    "$out/compile_cost.md" docs/benchmarks.md docs/img/benchmarks.svg
+echo "bench: wrote docs/benchmarks.md and docs/img/benchmarks.svg"

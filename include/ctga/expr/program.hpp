@@ -284,24 +284,33 @@ CTGA_ALWAYS_INLINE constexpr T term_magnitude(const op_term& o, const T* const* 
     return v;
 }
 
-// Assignment A of program P: its terms summed from the first (not from zero: x + 0.0 is not x
-// for x = −0.0, so a zero start would cost an addition the compiler may not remove).
+// The signed sum of terms [B, E) of program P (negated when Negate), as a balanced tree: the
+// compiler may not reassociate floating-point additions, and one left-to-right chain over the
+// thirty terms of a kinetic energy is a chain of thirty dependent additions. A half whose first
+// term is negative is subtracted with its signs flipped, so only a negative first term of the
+// whole sum costs a negation.
+template <class T, class P, std::uint32_t B, std::uint32_t E, bool Negate>
+CTGA_ALWAYS_INLINE constexpr T range_sum(const T* const* leaves, const T* tmp) noexcept {
+    if constexpr (E - B == 1) {
+        const T v = term_magnitude<T>(P::terms[B], leaves, tmp);
+        if constexpr ((P::terms[B].c.num < 0) != Negate) return T(-v);
+        else return v;
+    } else {
+        constexpr std::uint32_t M = B + (E - B) / 2;
+        const T left = range_sum<T, P, B, M, Negate>(leaves, tmp);
+        if constexpr ((P::terms[M].c.num < 0) != Negate) return left - range_sum<T, P, M, E, !Negate>(leaves, tmp);
+        else return left + range_sum<T, P, M, E, Negate>(leaves, tmp);
+    }
+}
+
+// Assignment A of program P: its terms summed (from the first term, not from zero: x + 0.0 is
+// not x for x = −0.0, so a zero start would cost an addition the compiler may not remove).
 template <class T, class P, std::size_t A>
 CTGA_ALWAYS_INLINE constexpr T assignment(const T* const* leaves, const T* tmp) noexcept {
     constexpr std::uint32_t begin = P::offsets[A];
     constexpr std::uint32_t end = P::offsets[A + 1];
-    if constexpr (begin == end) {
-        return T{};
-    } else {
-        const op_term& first = P::terms[begin];
-        T acc = first.c.num < 0 ? T(-term_magnitude<T>(first, leaves, tmp)) : term_magnitude<T>(first, leaves, tmp);
-        CTGA_UNROLL_TERMS
-        for (std::uint32_t t = begin + 1; t < end; ++t) {
-            const op_term& o = P::terms[t];
-            acc = o.c.num < 0 ? acc - term_magnitude<T>(o, leaves, tmp) : acc + term_magnitude<T>(o, leaves, tmp);
-        }
-        return acc;
-    }
+    if constexpr (begin == end) return T{};
+    else return range_sum<T, P, begin, end, false>(leaves, tmp);
 }
 
 #if defined(__GNUC__) && !defined(__clang__)

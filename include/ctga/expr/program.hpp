@@ -284,33 +284,46 @@ CTGA_ALWAYS_INLINE constexpr T term_magnitude(const op_term& o, const T* const* 
     return v;
 }
 
-// The signed sum of terms [B, E) of program P (negated when Negate), as a balanced tree: the
-// compiler may not reassociate floating-point additions, and one left-to-right chain over the
-// thirty terms of a kinetic energy is a chain of thirty dependent additions. A half whose first
-// term is negative is subtracted with its signs flipped, so only a negative first term of the
-// whole sum costs a negation.
-template <class T, class P, std::uint32_t B, std::uint32_t E, bool Negate>
+// The signed sum of terms I ∈ [B, E) of assignment A of program P (negated when Negate), as a
+// balanced tree: the compiler may not reassociate floating-point additions, and one left-to-right
+// chain over the thirty terms of a kinetic energy is a chain of thirty dependent additions. Term
+// I is the assignment's term (I + R) mod n: the rotation R puts a positive term first when there
+// is one, so that a − b is computed as a − b and not as −b + a. A half whose first term is
+// negative is subtracted with its signs flipped, so no other negation is ever needed.
+template <class P, std::size_t A>
+struct assignment_terms {
+    static constexpr std::uint32_t begin = P::offsets[A];
+    static constexpr std::uint32_t n = P::offsets[A + 1] - begin;
+    static constexpr std::uint32_t rotation = [] {
+        for (std::uint32_t i = 0; i < n; ++i)
+            if (P::terms[begin + i].c.num > 0) return i;
+        return std::uint32_t{0};
+    }();
+    static constexpr const op_term& at(std::uint32_t i) noexcept { return P::terms[begin + (i + rotation) % n]; }
+};
+
+template <class T, class P, std::size_t A, std::uint32_t B, std::uint32_t E, bool Negate>
 CTGA_ALWAYS_INLINE constexpr T range_sum(const T* const* leaves, const T* tmp) noexcept {
+    using terms = assignment_terms<P, A>;
     if constexpr (E - B == 1) {
-        const T v = term_magnitude<T>(P::terms[B], leaves, tmp);
-        if constexpr ((P::terms[B].c.num < 0) != Negate) return T(-v);
+        const T v = term_magnitude<T>(terms::at(B), leaves, tmp);
+        if constexpr ((terms::at(B).c.num < 0) != Negate) return T(-v);
         else return v;
     } else {
         constexpr std::uint32_t M = B + (E - B) / 2;
-        const T left = range_sum<T, P, B, M, Negate>(leaves, tmp);
-        if constexpr ((P::terms[M].c.num < 0) != Negate) return left - range_sum<T, P, M, E, !Negate>(leaves, tmp);
-        else return left + range_sum<T, P, M, E, Negate>(leaves, tmp);
+        const T left = range_sum<T, P, A, B, M, Negate>(leaves, tmp);
+        if constexpr ((terms::at(M).c.num < 0) != Negate) return left - range_sum<T, P, A, M, E, !Negate>(leaves, tmp);
+        else return left + range_sum<T, P, A, M, E, Negate>(leaves, tmp);
     }
 }
 
-// Assignment A of program P: its terms summed (from the first term, not from zero: x + 0.0 is
-// not x for x = −0.0, so a zero start would cost an addition the compiler may not remove).
+// Assignment A of program P: its terms summed (from a term, not from zero: x + 0.0 is not x for
+// x = −0.0, so a zero start would cost an addition the compiler may not remove).
 template <class T, class P, std::size_t A>
 CTGA_ALWAYS_INLINE constexpr T assignment(const T* const* leaves, const T* tmp) noexcept {
-    constexpr std::uint32_t begin = P::offsets[A];
-    constexpr std::uint32_t end = P::offsets[A + 1];
-    if constexpr (begin == end) return T{};
-    else return range_sum<T, P, begin, end, false>(leaves, tmp);
+    constexpr std::uint32_t n = assignment_terms<P, A>::n;
+    if constexpr (n == 0) return T{};
+    else return range_sum<T, P, A, 0, n, false>(leaves, tmp);
 }
 
 #if defined(__GNUC__) && !defined(__clang__)

@@ -162,12 +162,6 @@ struct coefficient {
     static constexpr signed_blade apply(blade_mask a) noexcept { return a == Mask ? signed_blade{0, Sign} : zero; }
 };
 
-// The parameterised rules as templates of the algebra alone, for the expression nodes.
-template <int K>
-struct grade_projection_of {
-    template <class Alg>
-    using rule = grade_projection<Alg, K>;
-};
 // The embedding of an algebra whose generators are generators Offset… of a larger one, in the
 // same order (Cl(0,3,1) as the e-half of Cl(0,6,2), §5): blade masks shift, orientations stay.
 template <class Alg, int Offset>
@@ -176,6 +170,12 @@ struct embedding {
     static constexpr signed_blade apply(blade_mask a) noexcept { return {a << Offset, 1}; }
 };
 
+// The parameterised rules as templates of the algebra alone, for the expression nodes.
+template <int K>
+struct grade_projection_of {
+    template <class Alg>
+    using rule = grade_projection<Alg, K>;
+};
 template <auto Perm>
 struct permutation_of {
     template <class Alg>

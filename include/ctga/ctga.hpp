@@ -26,3 +26,6 @@
 #include "ctga/mechanics/spatial.hpp"
 #include "ctga/mechanics/transform.hpp"
 #include "ctga/mechanics/exp_log.hpp"
+#include "ctga/integrators/integrate.hpp"
+#include "ctga/integrators/methods.hpp"
+#include "ctga/integrators/model.hpp"

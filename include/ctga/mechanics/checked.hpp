@@ -26,6 +26,7 @@ enum class input_error : unsigned char {
     not_homogeneous,        // the bottom row of a homogeneous matrix is not (0, 0, 0, 1)
     not_a_motor,            // g g* = 1 fails beyond repair (zero or non-finite rotor part)
     not_a_rigid_inertia,    // a 6×6 inertia without the form [[I, m Ĉ], [m Ĉᵀ, m 1]] of §2
+    did_not_converge,       // an implicit integration step's iteration did not converge
 };
 
 [[nodiscard]] constexpr const char* describe(input_error e) noexcept {
@@ -42,6 +43,8 @@ enum class input_error : unsigned char {
         case input_error::not_a_rigid_inertia:
             return "ctga: not a rigid body's inertia (mass block m*1, coupling block m*C antisymmetric)";
         case input_error::not_a_motor: return "ctga: not a rigid motion (the rotor part is zero or non-finite)";
+        case input_error::did_not_converge:
+            return "ctga: the implicit step did not converge (the step is too large for the angular velocity)";
     }
     return "ctga: unknown error";
 }

@@ -66,6 +66,20 @@ template <class T>
     return {half * s * g, s_dot};
 }
 
+// The same fixed-frame rates, evaluated about the body's own frame and moved out: the remedy for
+// a body far from the origin. There the fixed-frame N has entries m|t|² next to entries of
+// order m and I_c, and solving through it loses about |t|² of relative accuracy; the body-frame
+// N and M stay as given. With s = g s_b g* and dg/dt = ½ s g,
+//   ds/dt = ½ s g s_b g* + g ṡ_b g* + g s_b ½ (s g)* = ½ s s + g ṡ_b g* − ½ s s = g ṡ_b g*,
+// so ṡ is the body-frame acceleration moved by H (s_b = H⁻¹ s and W_b = Hᵀ W in, H ṡ_b out).
+template <class T>
+[[nodiscard]] constexpr state_rate<T> fixed_frame_rates_about_body(const rigid_body<T>& body, const motor<T>& g,
+                                                                   const screw<T>& s, const wrench<T>& W) noexcept {
+    const motor_map<T> G = map_of(g), G_inverse = inverse(G);
+    const screw<T> s_dot_b = acceleration(body.N, body.M, transform(G_inverse, s), transform(G_inverse, W));
+    return {half * s * g, transform(G, s_dot_b)};
+}
+
 // The body-frame form: velocity s_b and wrench W_b in the body frame; N and M are constant.
 template <class T>
 [[nodiscard]] constexpr state_rate<T> body_frame_rates(const rigid_body<T>& body, const motor<T>& g, const screw<T>& s_b,

@@ -192,6 +192,16 @@ template <class T>
     return out;
 }
 
+// The map of g⁻¹ = g* from the map of g: Rᵀ and −Rᵀ t (x ↦ R x + t inverted), 9m 6a.
+template <class T>
+[[nodiscard]] constexpr motor_map<T> inverse(const motor_map<T>& G) noexcept {
+    motor_map<T> out;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out.R[i][j] = G.R[j][i];
+    for (int i = 0; i < 3; ++i) out.t[i] = -(out.R[i][0] * G.t[0] + out.R[i][1] * G.t[1] + out.R[i][2] * G.t[2]);
+    return out;
+}
+
 // ---- homogeneous 4×4 matrices -----------------------------------------------------------
 
 // Row-major [R t; 0 0 0 1]: m[row][col], R = the 3×3 block, t = (m[0][3], m[1][3], m[2][3]).

@@ -1,0 +1,48 @@
+// Driving an integrator over many steps, with every step checked.
+//
+//   ctga::rigid_body_motion<double, ctga::frame::body> model{body};
+//   auto run = ctga::integrate(ctga::lie_rk4{}, model, {g0, s0}, 1e-3, 10'000);
+//   if (!run) std::puts(ctga::describe(run.error));   // the state is the last good one
+//
+// A non-finite step size or initial state, a step producing a NaN or an infinity (a blow-up of
+// an unstable method, a wrench returning NaN) and an implicit step that does not converge all
+// stop the run and are reported with the number of steps completed: a corrupted state is never
+// returned as if it were a result.
+#pragma once
+
+#include "ctga/integrators/methods.hpp"
+#include "ctga/integrators/model.hpp"
+
+namespace ctga {
+
+template <class State>
+struct run_result {
+    State state;         // after `steps` good steps
+    long long steps{};   // steps completed
+    input_error error = input_error::none;
+
+    [[nodiscard]] constexpr explicit operator bool() const noexcept { return error == input_error::none; }
+};
+
+struct ignore_steps {
+    template <class State>
+    constexpr void operator()(long long, const State&) const noexcept {}
+};
+
+// `steps` steps of size h from x; observe(n, state) after step n (n = 1 … steps).
+template <class Method, motion_model M, class Observer = ignore_steps>
+[[nodiscard]] constexpr run_result<state_of<M>> integrate(const Method& method, const M& model, state_of<M> x,
+                                                          const typename M::scalar_type& h, long long steps,
+                                                          Observer&& observe = {}) {
+    if (!is_finite(h) || !model.finite(x.g, x.s)) return {x, 0, input_error::non_finite};
+    for (long long n = 0; n < steps; ++n) {
+        const checked<state_of<M>> next = method.step(model, x, h);
+        if (!next) return {x, n, next.error};
+        if (!model.finite(next.value.g, next.value.s)) return {x, n, input_error::non_finite};
+        x = next.value;
+        observe(n + 1, x);
+    }
+    return {x, steps, input_error::none};
+}
+
+}  // namespace ctga

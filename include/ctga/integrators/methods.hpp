@@ -146,10 +146,10 @@ struct implicit_midpoint {
         for (int i = 0; i < max_iterations; ++i) {
             const screw_t s_m(T(1) / T(2) * (x.s + s1));
             const screw_t next(x.s + h * model.acceleration(midpoint_pose(s_m, T(1) / T(2)), s_m));
+            if (!model.finite(x.g, next)) break;  // the iteration diverged
             const T change = model.magnitude(screw_t(next - s1));
             const T scale = model.magnitude(next) + model.magnitude(x.s);
             s1 = next;
-            if (!(change == change)) break;  // NaN: diverged
             if (change <= T(4) * eps * scale || (change >= previous && change <= T(1024) * eps * scale)) {
                 const screw_t s_mid(T(1) / T(2) * (x.s + s1));
                 return {{midpoint_pose(s_mid, T(1)), s1}, input_error::none};

@@ -79,3 +79,22 @@ TEST_CASE("the adjoint action is a screw at 72 multiplications", "[mechanics][mo
 }
 
 }  // namespace
+
+TEST_CASE("map_of is homogeneous: a drifted motor gives the map of the rigid motion it encodes", "[mechanics][motion]") {
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1), scale(0.5, 2.0);
+    double worst = 0;
+    for (int n = 0; n < 200; ++n) {
+        const motor<double> g = ctga::exp(screw<double>{2 * u(rng), 2 * u(rng), 2 * u(rng), 5 * u(rng), 5 * u(rng), 5 * u(rng)});
+        // off g g* = 1: scaled, and every component perturbed (|α|² − 1 and α·β both non-zero)
+        const double lambda = scale(rng);
+        motor<double> drifted;
+        for (std::size_t i = 0; i < 8; ++i) drifted[i] = lambda * g[i] + 1e-3 * u(rng);
+        const motor_map<double> a = map_of(drifted), b = map_of(renormalize(drifted));
+        for (int i = 0; i < 3; ++i) {
+            worst = std::max(worst, std::abs(a.t[i] - b.t[i]) / std::max(1.0, std::abs(b.t[i])));
+            for (int j = 0; j < 3; ++j) worst = std::max(worst, std::abs(a.R[i][j] - b.R[i][j]));
+        }
+    }
+    CHECK(worst <= 1e-14);
+}

@@ -6,7 +6,8 @@
 // g = t r it is H = [[R, 0], [T R, R]] on screws (§2) and H⁻ᵀ = [[R, T R], [0, R]] on co-screws,
 // and on the elements of grade 4 it is the congruence with these (the outermorphism of the
 // sandwich, §5: h(a ∧ b)h* = (h a h*) ∧ (h b h*)). motor_map (motion.hpp) holds R and t; building
-// it costs 21m 27a, applying it to a screw or a co-screw 24m 18a, to a rigid body's inertia 73m 54a.
+// it costs 31m 24a and a division, applying it to a screw or a co-screw 24m 18a, to a rigid
+// body's inertia 54m 50a and 3 halvings.
 // The sandwich formulas themselves remain available (ctga::adjoint, paper:: formulas) and the
 // tests prove the two agree.
 #pragma once
@@ -42,30 +43,41 @@ template <class T>
 }
 
 // (g ḡ) N (g ḡ)* = H⁻ᵀ N H⁻¹ for a rigid body's N = [[I_o, Ĥ], [−Ĥ, m 1]] (h = m c):
-// m' = m, h' = R h + m t, and, with y = R h and z = y + (m/2) t,
-// I_o' = R I_o Rᵀ − (t zᵀ + z tᵀ − 2 (z·t) 1)   (parallel axes: Ĉ² terms of c and of R c + t).
+// m' = m, h' = R h + m t and, with u = R h + h' (= 2z for z = R h + (m/2) t),
+//   I_o' = R I_o Rᵀ + (u·t) 1 − (t uᵀ + u tᵀ)/2   (parallel axes: Ĉ² terms of c and of R c + t),
+// i.e. Σ_{k≠i} t_k u_k added on the diagonal and −(t_i u_j + u_i t_j)/2 off it.
+// (R I_o Rᵀ)_ij = R_i·(I_o R_j) for the rows R_i of R; R is a rotation, so tr(R I_o Rᵀ) = tr I_o
+// gives the last diagonal entry and only I_o R_0 and I_o R_1 are formed (54m 50a, 3 halvings).
 template <class T>
 [[nodiscard]] constexpr rigid_inertia<T> transform(const motor_map<T>& G, const rigid_inertia<T>& N) noexcept {
+    using linear3::dot;
     using spatial_detail::entry_of;
     using spatial_detail::set_entry;
+    const mat3<T>& R = G.R;
+    const vec3<T>& t = G.t;
     const T m = entry_of<false, 3, 3>(N);
     const vec3<T> h{entry_of<false, 2, 4>(N), entry_of<false, 0, 5>(N), entry_of<false, 1, 3>(N)};  // m Ĉ = Ĥ
     const mat3<T> Io{{{entry_of<false, 0, 0>(N), entry_of<false, 0, 1>(N), entry_of<false, 0, 2>(N)},
                       {entry_of<false, 1, 0>(N), entry_of<false, 1, 1>(N), entry_of<false, 1, 2>(N)},
                       {entry_of<false, 2, 0>(N), entry_of<false, 2, 1>(N), entry_of<false, 2, 2>(N)}}};
-    const vec3<T>& t = G.t;
-    const vec3<T> y = linear3::apply(G.R, h);
-    const T half_m = m / T(2);
-    const vec3<T> z{y[0] + half_m * t[0], y[1] + half_m * t[1], y[2] + half_m * t[2]};
-    const vec3<T> q{t[0] * z[0], t[1] * z[1], t[2] * z[2]};
-    const mat3<T> I = linear3::rotate_symmetric(G.R, Io);
+    // R I_o Rᵀ, column by column
+    const vec3<T> a0 = linear3::apply(Io, R[0]);
+    const T r00 = dot(R[0], a0), r20 = dot(R[2], a0);
+    const vec3<T> a1 = linear3::apply(Io, R[1]);
+    const T r01 = dot(R[0], a1), r11 = dot(R[1], a1), r21 = dot(R[2], a1);
+    const T r22 = Io[2][2] + (Io[0][0] - r00) + (Io[1][1] - r11);  // the trace is invariant
+    // h' and the parallel-axis terms
+    const vec3<T> y = linear3::apply(R, h);
     const vec3<T> h2{y[0] + m * t[0], y[1] + m * t[1], y[2] + m * t[2]};
+    const vec3<T> u{y[0] + h2[0], y[1] + h2[1], y[2] + h2[2]};
+    const T xy = r01 - (t[0] * u[1] + u[0] * t[1]) / T(2);
+    const T xz = r20 - (t[0] * u[2] + u[0] * t[2]) / T(2);
+    const T yz = r21 - (t[1] * u[2] + u[1] * t[2]) / T(2);
+    const vec3<T> q{t[0] * u[0], t[1] * u[1], t[2] * u[2]};
     rigid_inertia<T> out;
-    set_entry<false, 0, 0>(out, I[0][0] + T(2) * (q[1] + q[2]));
-    set_entry<false, 1, 1>(out, I[1][1] + T(2) * (q[0] + q[2]));
-    set_entry<false, 2, 2>(out, I[2][2] + T(2) * (q[0] + q[1]));
-    const T xy = I[0][1] - (t[0] * z[1] + z[0] * t[1]), xz = I[0][2] - (t[0] * z[2] + z[0] * t[2]),
-            yz = I[1][2] - (t[1] * z[2] + z[1] * t[2]);
+    set_entry<false, 0, 0>(out, r00 + (q[1] + q[2]));
+    set_entry<false, 1, 1>(out, r11 + (q[0] + q[2]));
+    set_entry<false, 2, 2>(out, r22 + (q[0] + q[1]));
     set_entry<false, 0, 1>(out, xy), set_entry<false, 1, 0>(out, xy);
     set_entry<false, 0, 2>(out, xz), set_entry<false, 2, 0>(out, xz);
     set_entry<false, 1, 2>(out, yz), set_entry<false, 2, 1>(out, yz);

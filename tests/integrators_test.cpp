@@ -54,7 +54,7 @@ double fitted_slope(const std::vector<double>& h, const std::vector<double>& e) 
 }
 
 template <class Method, class Model>
-double slope_of(const Method& method, const Model& model, const state_of<Model>& x0, double t_end,
+double slope_of(const char* name, const Method& method, const Model& model, const state_of<Model>& x0, double t_end,
                 std::vector<double> steps) {
     const auto ref = integrate(rk4{}, model, x0, 1e-3, std::llround(t_end / 1e-3));
     REQUIRE(ref);
@@ -65,7 +65,8 @@ double slope_of(const Method& method, const Model& model, const state_of<Model>&
         errors.push_back(attitude_error(run.state.g, ref.state.g));
     }
     const double slope = fitted_slope(steps, errors);
-    std::printf("  errors %.2e … %.2e, slope %.3f\n", errors.front(), errors.back(), slope);
+    std::printf("%-5s frame, %-24s attitude errors %.2e … %.2e, slope %.3f\n",
+                Model::velocity_frame == frame::body ? "body" : "fixed", name, errors.front(), errors.back(), slope);
     return slope;
 }
 
@@ -81,12 +82,11 @@ TEMPLATE_TEST_CASE_SIG("each integrator converges at its order (fitted slope wit
     const rigid_body_motion<double, F> model{asymmetric_body<double>()};
     const state_of<decltype(model)> x0{some_pose<double>(), screw<double>{0.3, 1.0, -0.4, 0.2, -0.1, 0.5}};
     const std::vector<double> coarse{0.2, 0.1, 0.05, 0.025};
-    std::printf("frame %s\n", F == frame::body ? "body" : "fixed");
-    CHECK(std::abs(slope_of(rk4{}, model, x0, 10.0, coarse) - 4) <= 0.3);
-    CHECK(std::abs(slope_of(rk4{.renormalize = false}, model, x0, 10.0, coarse) - 4) <= 0.3);
-    CHECK(std::abs(slope_of(lie_rk4{}, model, x0, 10.0, coarse) - 4) <= 0.3);
-    CHECK(std::abs(slope_of(implicit_midpoint{}, model, x0, 10.0, coarse) - 2) <= 0.3);
-    CHECK(std::abs(slope_of(explicit_euler{}, model, x0, 2.0, {0.004, 0.002, 0.001, 0.0005}) - 1) <= 0.3);
+    CHECK(std::abs(slope_of("rk4", rk4{}, model, x0, 10.0, coarse) - 4) <= 0.3);
+    CHECK(std::abs(slope_of("rk4 (no renormalisation)", rk4{.renormalize = false}, model, x0, 10.0, coarse) - 4) <= 0.3);
+    CHECK(std::abs(slope_of("lie_rk4", lie_rk4{}, model, x0, 10.0, coarse) - 4) <= 0.3);
+    CHECK(std::abs(slope_of("implicit_midpoint", implicit_midpoint{}, model, x0, 10.0, coarse) - 2) <= 0.3);
+    CHECK(std::abs(slope_of("explicit_euler", explicit_euler{}, model, x0, 2.0, {0.004, 0.002, 0.001, 0.0005}) - 1) <= 0.3);
 }
 
 TEST_CASE("the implicit midpoint conserves the body-frame kinetic energy over 1e5 steps", "[integrators]") {

@@ -43,6 +43,8 @@
 // acceleration, 11 per fixed-frame one.
 #pragma once
 
+#include "support/dual_quaternion.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -171,27 +173,6 @@ dense31<T> acceleration(const dense62<T>& N, const dense62<T>& M, const dense62<
     return lower_screw(d::vee(E<T>(), d::wedge(M, rhs)));
 }
 
-// sinc φ = sin φ/φ and c(φ) = (cos φ − sinc φ)/φ², summed as series below φ = 1 (exp_log.hpp).
-template <class T>
-void sinc_and_c(const T& phi, const T& phi2, T& sinc, T& c) {
-    if (phi < T(1)) {
-        T u = T(-1) / T(6);
-        T su = T(0), cu = T(0);
-        for (int n = 1; n <= 12; ++n) {
-            su += u;
-            cu += T(2 * n) * u;
-            u *= -phi2 / T((2 * n + 2) * (2 * n + 3));
-        }
-        sinc = T(1) + phi2 * su;
-        c = cu;
-        return;
-    }
-    using std::cos;
-    using std::sin;
-    sinc = sin(phi) / phi;
-    c = (cos(phi) - sinc) / phi2;
-}
-
 }  // namespace dense_model_detail
 
 // ---- conversions to and from ctga's types ----------------------------------------------------
@@ -278,50 +259,18 @@ struct dense_motion {
         if constexpr (Frame == ctga::frame::body) return (T(1) / T(2)) * ctga::dense::gp(g, s);
         else return (T(1) / T(2)) * ctga::dense::gp(s, g);
     }
-    // e^{z/2} = cos φ + sinc φ a + ε(−sinc φ (a·b) + sinc φ b + c(φ)(a·b) a), a = ω/2, b = v/2.
+    // e^{z/2} (exp_log.hpp's closed form, support/dual_quaternion.hpp)
     [[nodiscard]] motor_type exp(const screw_type& z) const {
-        using std::cos;
-        using std::sqrt;
-        const auto w = dense_model_detail::screw_coefficients(z);
-        const T ax = w[0] / T(2), ay = w[1] / T(2), az = w[2] / T(2);
-        const T bx = w[3] / T(2), by = w[4] / T(2), bz = w[5] / T(2);
-        const T phi2 = ax * ax + ay * ay + az * az;
-        const T phi = sqrt(phi2);
-        T sinc, c;
-        dense_model_detail::sinc_and_c(phi, phi2, sinc, c);
-        const T ab = ax * bx + ay * by + az * bz;
-        const T cab = c * ab;
-        return dense_model_detail::motor_from(std::array<T, 8>{cos(phi), sinc * ax, sinc * ay, sinc * az, -sinc * ab,
-                                                              sinc * bx + cab * ax, sinc * by + cab * ay,
-                                                              sinc * bz + cab * az});
+        return dense_model_detail::motor_from(dual_quaternion::exp(dense_model_detail::screw_coefficients(z)));
     }
     [[nodiscard]] motor_type compose(const motor_type& a, const motor_type& b) const { return ctga::dense::gp(a, b); }
     [[nodiscard]] screw_type bracket(const screw_type& a, const screw_type& b) const {
         return dense_model_detail::screw_part(
             dense31<T>((T(1) / T(2)) * (ctga::dense::gp(a, b) - ctga::dense::gp(b, a))));
     }
-    // g / √(g g*) = α̂ + ε(β − (α̂·β)α̂)/|α|, after scaling by the largest |αi| (motion.hpp).
-    // A motor with α = 0 or non-finite components gives NaNs, as ctga::renormalize does.
+    // g / √(g g*) (motion.hpp, support/dual_quaternion.hpp); NaNs for α = 0 or a non-finite g
     [[nodiscard]] motor_type renormalize(const motor_type& g) const {
-        using std::sqrt;
-        std::array<T, 8> x = dense_model_detail::motor_coefficients(g);
-        T m = T(0);
-        for (std::size_t i = 0; i < 4; ++i) {
-            const T a = x[i] < T(0) ? -x[i] : x[i];
-            if (a > m) m = a;
-        }
-        bool ok = m > T(0);
-        for (const T& v : x) ok = ok && std::isfinite(v);
-        if (!ok) {
-            x.fill(std::numeric_limits<T>::quiet_NaN());
-            return dense_model_detail::motor_from(x);
-        }
-        for (T& v : x) v /= m;
-        const T n = sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);
-        for (T& v : x) v /= n;
-        const T d = x[0] * x[4] + x[1] * x[5] + x[2] * x[6] + x[3] * x[7];
-        for (std::size_t i = 0; i < 4; ++i) x[4 + i] -= d * x[i];
-        return dense_model_detail::motor_from(x);
+        return dense_model_detail::motor_from(dual_quaternion::renormalized(dense_model_detail::motor_coefficients(g)));
     }
     [[nodiscard]] bool finite(const motor_type& g, const screw_type& s) const {
         for (const T& v : g.components())

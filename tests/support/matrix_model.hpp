@@ -28,6 +28,8 @@
 //   -> motor<T>, to_ctga(Matrix<T,6,1>) -> screw<T>.
 #pragma once
 
+#include "support/dual_quaternion.hpp"
+
 #include <cmath>
 #include <cstddef>
 #include <limits>
@@ -137,26 +139,6 @@ vector6<T> motion_cross(const vector6<T>& a, const vector6<T>& b) {
     return out;
 }
 
-// sinc φ = sin φ/φ and c(φ) = (cos φ − sinc φ)/φ², summed as series below φ = 1 (exp_log.hpp).
-template <class T>
-void sinc_and_c(const T& phi, const T& phi2, T& sinc, T& c) {
-    if (phi < T(1)) {
-        T u = T(-1) / T(6);
-        T su = T(0), cu = T(0);
-        for (int n = 1; n <= 12; ++n) {
-            su += u;
-            cu += T(2 * n) * u;
-            u *= -phi2 / T((2 * n + 2) * (2 * n + 3));
-        }
-        sinc = T(1) + phi2 * su;
-        c = cu;
-        return;
-    }
-    using std::cos;
-    using std::sin;
-    sinc = sin(phi) / phi;
-    c = (cos(phi) - sinc) / phi2;
-}
 
 }  // namespace matrix_model_detail
 
@@ -265,22 +247,10 @@ struct matrix_motion {
         if constexpr (Frame == ctga::frame::body) return (T(1) / T(2)) * dq_mul<T>(a, b, w, v);
         else return (T(1) / T(2)) * dq_mul<T>(w, v, a, b);
     }
-    // e^{z/2} = cos φ + sinc φ a + ε(−sinc φ (a·b) + sinc φ b + c(φ)(a·b) a), a = ω/2, b = v/2.
+    // e^{z/2} (exp_log.hpp's closed form, support/dual_quaternion.hpp)
     [[nodiscard]] motor_type exp(const screw_type& z) const {
-        using std::cos;
-        using std::sqrt;
-        const T ax = z(0) / T(2), ay = z(1) / T(2), az = z(2) / T(2);
-        const T bx = z(3) / T(2), by = z(4) / T(2), bz = z(5) / T(2);
-        const T phi2 = ax * ax + ay * ay + az * az;
-        const T phi = sqrt(phi2);
-        T sinc, c;
-        matrix_model_detail::sinc_and_c(phi, phi2, sinc, c);
-        const T ab = ax * bx + ay * by + az * bz;
-        const T cab = c * ab;
-        motor_type out;
-        out << cos(phi), sinc * ax, sinc * ay, sinc * az, -sinc * ab, sinc * bx + cab * ax, sinc * by + cab * ay,
-            sinc * bz + cab * az;
-        return out;
+        const auto g = dual_quaternion::exp(std::array<T, 6>{z(0), z(1), z(2), z(3), z(4), z(5)});
+        return Eigen::Map<const motor_type>(g.data());
     }
     [[nodiscard]] motor_type compose(const motor_type& a, const motor_type& b) const {
         return matrix_model_detail::dq_mul<T>(a.template head<4>(), a.template tail<4>(), b.template head<4>(),
@@ -289,24 +259,12 @@ struct matrix_motion {
     [[nodiscard]] screw_type bracket(const screw_type& a, const screw_type& b) const {
         return matrix_model_detail::motion_cross<T>(a, b);
     }
-    // g / √(g g*) = α̂ + ε(β − (α̂·β)α̂)/|α|, after scaling by the largest |αi| (motion.hpp).
-    // A motor with α = 0 or non-finite components gives NaNs, as ctga::renormalize does.
+    // g / √(g g*) (motion.hpp, support/dual_quaternion.hpp); NaNs for α = 0 or a non-finite g
     [[nodiscard]] motor_type renormalize(const motor_type& g) const {
-        using std::sqrt;
-        if (!g.allFinite()) return motor_type::Constant(std::numeric_limits<T>::quiet_NaN());
-        T m = T(0);
-        for (int i = 0; i < 4; ++i) {
-            const T a = g(i) < T(0) ? -g(i) : g(i);
-            if (a > m) m = a;
-        }
-        if (!(m > T(0))) return motor_type::Constant(std::numeric_limits<T>::quiet_NaN());
-        motor_type x;
-        for (int i = 0; i < 8; ++i) x(i) = g(i) / m;
-        const T n = sqrt(x(0) * x(0) + x(1) * x(1) + x(2) * x(2) + x(3) * x(3));
-        for (int i = 0; i < 8; ++i) x(i) /= n;
-        const T d = x(0) * x(4) + x(1) * x(5) + x(2) * x(6) + x(3) * x(7);
-        for (int i = 0; i < 4; ++i) x(4 + i) -= d * x(i);
-        return x;
+        std::array<T, 8> x{};
+        for (int i = 0; i < 8; ++i) x[static_cast<std::size_t>(i)] = g(i);
+        x = dual_quaternion::renormalized(x);
+        return Eigen::Map<const motor_type>(x.data());
     }
     [[nodiscard]] bool finite(const motor_type& g, const screw_type& s) const { return g.allFinite() && s.allFinite(); }
     [[nodiscard]] T magnitude(const screw_type& z) const { return z.cwiseAbs().maxCoeff(); }

@@ -126,7 +126,7 @@ struct lie_rk4 {
 // g₁ = the pose moved by exp(h s_m). The implicit equation for s₁ is solved by fixed-point
 // iteration from an explicit Euler guess; it contracts when h‖∂a/∂s‖ < 2, i.e. for h|ω| below
 // about 1 (a ratio of principal moments scales the bound). The iteration stops when an update
-// changes s₁ by at most `tolerance` (relative, in max |component|), or when it stalls at the
+// changes s₁ by at most ε (relative, in max |component|), or when it stalls at the
 // rounding level; otherwise the step reports did_not_converge.
 struct implicit_midpoint {
     static constexpr int order = 2;
@@ -150,7 +150,7 @@ struct implicit_midpoint {
             const T change = model.magnitude(screw_t(next - s1));
             const T scale = model.magnitude(next) + model.magnitude(x.s);
             s1 = next;
-            if (change <= T(4) * eps * scale || (change >= previous && change <= T(1024) * eps * scale)) {
+            if (change <= eps * scale || (change >= previous && change <= T(1024) * eps * scale)) {
                 const screw_t s_mid(T(1) / T(2) * (x.s + s1));
                 return {{midpoint_pose(s_mid, T(1)), s1}, input_error::none};
             }

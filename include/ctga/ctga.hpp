@@ -29,3 +29,4 @@
 #include "ctga/integrators/integrate.hpp"
 #include "ctga/integrators/methods.hpp"
 #include "ctga/integrators/model.hpp"
+#include "ctga/scenes/body_kinds.hpp"

@@ -1,0 +1,121 @@
+// Bodies that declare their subspace and inertia structure (include/ctga/scenes/body_kinds.hpp):
+// the engine's price of one body step per combination (static_asserted), and the same trajectory
+// as the general 3D code (a rigid_body_motion with the full 24-blade inertia and 6-blade screws)
+// for every kind.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <ctga/ctga.hpp>
+#include <ctga/scenes/body_kinds.hpp>
+
+#include "support/catch.hpp"
+
+namespace {
+
+using namespace ctga;
+namespace sub = ctga::subspace;
+namespace kind = ctga::inertia_kind;
+
+template <class S, class K>
+constexpr expr::cost step = body_step_cost<S, K>;
+
+// what one body step (ġ and ṡ of a free body, body frame) costs, by kind
+static_assert(step<sub::full, kind::sphere>.mul < step<sub::full, kind::diagonal>.mul,
+              "a sphere's Coriolis term ω × dω is structurally zero");
+static_assert(step<sub::full, kind::diagonal>.mul < step<sub::full, kind::general>.mul);
+static_assert(3 * step<sub::planar, kind::diagonal>.mul <= step<sub::full, kind::general>.mul,
+              "a planar body's step works on 3 components: at most a third of the general body's");
+static_assert(3 * step<sub::planar, kind::diagonal>.add <= step<sub::full, kind::general>.add);
+static_assert(step<sub::rotation, kind::diagonal>.mul < step<sub::full, kind::diagonal>.mul);
+static_assert(step<sub::translation, kind::sphere>.mul < step<sub::planar, kind::sphere>.mul);
+
+template <class S, class K>
+void report(const char* name) {
+    constexpr expr::cost c = step<S, K>;
+    std::printf("body step %-28s %3zum %3zua\n", name, static_cast<std::size_t>(c.mul), static_cast<std::size_t>(c.add));
+}
+
+double rel(const motor<double>& a, const motor<double>& b) {
+    double d = 0, s = 1;
+    for (std::size_t i = 0; i < 8; ++i) d = std::max(d, std::abs(a[i] - b[i])), s = std::max(s, std::abs(b[i]));
+    return d / s;
+}
+double rel(const screw<double>& a, const screw<double>& b) {
+    double d = 0, s = 1;
+    for (std::size_t i = 0; i < 6; ++i) d = std::max(d, std::abs(a[i] - b[i])), s = std::max(s, std::abs(b[i]));
+    return d / s;
+}
+
+// The kind's body and the same body as general mass properties (centre of mass at the origin,
+// principal axes along the frame).
+struct principal {
+    double m, dx, dy, dz;
+};
+template <class K>
+typename K::template data<double> data_of(const principal& p) {
+    if constexpr (std::is_same_v<K, kind::sphere>) return {p.m, p.dx};
+    else if constexpr (std::is_same_v<K, kind::axisymmetric>) return {p.m, p.dx, p.dz};
+    else if constexpr (std::is_same_v<K, kind::diagonal>) return {p.m, p.dx, p.dy, p.dz};
+    else return make_rigid_body(*make_principal_mass_properties(p.m, p.dx, p.dy, p.dz));
+}
+
+// Integrates the kind's model and the general model from the same state; the worst difference.
+template <class S, class K, class Method>
+double same_as_general(const Method& method, const principal& p, const screw<double>& s0, const motor<double>& g0) {
+    using model_t = body_motion<double, S, K>;
+    const model_t specific{data_of<K>(p)};
+    const rigid_body_motion<double, frame::body> general{make_rigid_body(*make_principal_mass_properties(p.m, p.dx, p.dy, p.dz))};
+    const auto a = integrate(method, specific, {project<typename model_t::motor_type>(g0), project<typename model_t::screw_type>(s0)},
+                             0.01, 2000);
+    const auto b = integrate(method, general, {g0, s0}, 0.01, 2000);
+    REQUIRE(a);
+    REQUIRE(b);
+    return std::max(rel(motor<double>(a.state.g), b.state.g), rel(screw<double>(a.state.s), b.state.s));
+}
+
+}  // namespace
+
+TEST_CASE("cost of one body step per subspace and inertia structure", "[scenes][cost]") {
+    report<sub::full, kind::general>("full, general");
+    report<sub::full, kind::diagonal>("full, diagonal");
+    report<sub::full, kind::axisymmetric>("full, axisymmetric");
+    report<sub::full, kind::sphere>("full, sphere");
+    report<sub::planar, kind::diagonal>("planar, diagonal");
+    report<sub::planar, kind::sphere>("planar, sphere");
+    report<sub::rotation, kind::general>("rotation, general");
+    report<sub::rotation, kind::diagonal>("rotation, diagonal");
+    report<sub::translation, kind::sphere>("translation, sphere");
+    CHECK(step<sub::full, kind::general>.mul == 122);  // = ½ g s (44m) + the typed acceleration (78m)
+}
+
+TEST_CASE("every body kind follows the general 3D code's trajectory to 1e-12", "[scenes]") {
+    const motor<double> g0 = rigid_motion(translation(0.5, -1.0, 0.0), rotation(0.0, 0.0, 1.0, 0.7));  // in the plane
+    const motor<double> tilted = rigid_motion(translation(0.5, -1.0, 2.0), rotation(1.0 / 3, 2.0 / 3, 2.0 / 3, 0.7));
+    const screw<double> tumbling{0.3, 1.0, -0.4, 0.2, -0.1, 0.5};
+    const screw<double> in_plane{0, 0, 1.3, 0.2, -0.1, 0};
+    const screw<double> spinning{0.3, 1.0, -0.4, 0, 0, 0};
+    const screw<double> sliding{0, 0, 0, 0.2, -0.1, 0.5};
+    const principal box{2.0, 2.0, 2.5, 3.0}, rod{1.5, 1.2, 1.2, 0.4}, ball{3.0, 1.1, 1.1, 1.1};
+    double worst = 0;
+    const auto check = [&](const char* name, double e) {
+        std::printf("%-36s %.2e\n", name, e);
+        CHECK(e <= 1e-12);
+        worst = std::max(worst, e);
+    };
+    for (int method = 0; method < 2; ++method) {
+        const auto run = [&]<class S, class K>(const char* name, const principal& p, const screw<double>& s0,
+                                                const motor<double>& g) {
+            const double e = method == 0 ? same_as_general<S, K>(lie_rk4{}, p, s0, g) : same_as_general<S, K>(rk4{}, p, s0, g);
+            check(name, e);
+        };
+        run.template operator()<sub::full, kind::diagonal>("full, diagonal, tumbling", box, tumbling, tilted);
+        run.template operator()<sub::full, kind::axisymmetric>("full, axisymmetric, tumbling", rod, tumbling, tilted);
+        run.template operator()<sub::full, kind::sphere>("full, sphere, tumbling", ball, tumbling, tilted);
+        run.template operator()<sub::planar, kind::diagonal>("planar, diagonal", box, in_plane, g0);
+        run.template operator()<sub::planar, kind::sphere>("planar, sphere", ball, in_plane, g0);
+        run.template operator()<sub::rotation, kind::diagonal>("rotation, diagonal", box, spinning, motor<double>{1, 0, 0, 0, 0, 0, 0, 0});
+        run.template operator()<sub::translation, kind::sphere>("translation, sphere", ball, sliding, motor<double>(translation(0.5, -1.0, 2.0)));
+    }
+    std::printf("worst difference from the general code: %.2e\n", worst);
+}

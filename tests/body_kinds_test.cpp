@@ -17,8 +17,10 @@ using namespace ctga;
 namespace sub = ctga::subspace;
 namespace kind = ctga::inertia_kind;
 
-template <class S, class K>
-constexpr expr::cost step = body_step_cost<S, K>;
+template <class S, class K, class W = wrench_model::none>
+constexpr expr::cost step = body_step_cost<S, K, W>;
+template <class S>
+using gravity = wrench_model::uniform_field<double, S>;
 
 // what one body step (ġ and ṡ of a free body, body frame) costs, by kind
 static_assert(step<sub::full, kind::sphere>.mul < step<sub::full, kind::diagonal>.mul,
@@ -29,10 +31,13 @@ static_assert(3 * step<sub::planar, kind::diagonal>.mul <= step<sub::full, kind:
 static_assert(3 * step<sub::planar, kind::diagonal>.add <= step<sub::full, kind::general>.add);
 static_assert(step<sub::rotation, kind::diagonal>.mul < step<sub::full, kind::diagonal>.mul);
 static_assert(step<sub::translation, kind::sphere>.mul < step<sub::planar, kind::sphere>.mul);
+static_assert(step<sub::full, kind::diagonal>.mul < step<sub::full, kind::diagonal, gravity<sub::full>>.mul,
+              "a body without wrench has no wrench code");
+static_assert(step<sub::planar, kind::diagonal>.mul < step<sub::planar, kind::diagonal, gravity<sub::planar>>.mul);
 
-template <class S, class K>
+template <class S, class K, class W = wrench_model::none>
 void report(const char* name) {
-    constexpr expr::cost c = step<S, K>;
+    constexpr expr::cost c = step<S, K, W>;
     std::printf("body step %-28s %3zum %3zua\n", name, static_cast<std::size_t>(c.mul), static_cast<std::size_t>(c.add));
 }
 
@@ -83,9 +88,11 @@ TEST_CASE("cost of one body step per subspace and inertia structure", "[scenes][
     report<sub::full, kind::sphere>("full, sphere");
     report<sub::planar, kind::diagonal>("planar, diagonal");
     report<sub::planar, kind::sphere>("planar, sphere");
-    report<sub::rotation, kind::general>("rotation, general");
     report<sub::rotation, kind::diagonal>("rotation, diagonal");
     report<sub::translation, kind::sphere>("translation, sphere");
+    report<sub::full, kind::general, gravity<sub::full>>("full, general, gravity");
+    report<sub::full, kind::diagonal, gravity<sub::full>>("full, diagonal, gravity");
+    report<sub::planar, kind::diagonal, gravity<sub::planar>>("planar, diagonal, gravity");
     CHECK(step<sub::full, kind::general>.mul == 122);  // = ½ g s (44m) + the typed acceleration (78m)
 }
 
@@ -118,4 +125,39 @@ TEST_CASE("every body kind follows the general 3D code's trajectory to 1e-12", "
         run.template operator()<sub::translation, kind::sphere>("translation, sphere", ball, sliding, motor<double>(translation(0.5, -1.0, 2.0)));
     }
     std::printf("worst difference from the general code: %.2e\n", worst);
+}
+
+// The general code's gravity, written independently: (0, Rᵀ m a) from the rotation of map_of(g).
+struct general_gravity {
+    vec3<double> weight;
+    wrench<double> operator()(const motor<double>& g, const screw<double>&) const {
+        const motor_map<double> G = map_of(g);
+        vec3<double> f{};
+        for (int i = 0; i < 3; ++i) f[i] = G.R[0][i] * weight[0] + G.R[1][i] * weight[1] + G.R[2][i] * weight[2];
+        return wrench<double>{0, 0, 0, f[0], f[1], f[2]};
+    }
+};
+
+TEST_CASE("under gravity, the body kinds follow the general 3D code to 1e-12", "[scenes]") {
+    const vec3<double> a{0.3, -9.81, 0.0};  // in the e1, e2 plane, so the planar body feels all of it
+    const principal box{2.0, 2.0, 2.5, 3.0};
+    const motor<double> tilted = rigid_motion(translation(0.5, -1.0, 2.0), rotation(1.0 / 3, 2.0 / 3, 2.0 / 3, 0.7));
+    const motor<double> flat = rigid_motion(translation(0.5, -1.0, 0.0), rotation(0.0, 0.0, 1.0, 0.7));
+    const rigid_body_motion<double, frame::body, general_gravity> general{
+        make_rigid_body(*make_principal_mass_properties(box.m, box.dx, box.dy, box.dz)), {{box.m * a[0], box.m * a[1], box.m * a[2]}}};
+    const auto compare = [&]<class S, class K>(const char* name, const motor<double>& g0, const screw<double>& s0) {
+        using model_t = body_motion<double, S, K, gravity<S>>;
+        const model_t specific{data_of<K>(box), weight<S>(box.m, a)};
+        const auto x = integrate(lie_rk4{}, specific,
+                                 {project<typename model_t::motor_type>(g0), project<typename model_t::screw_type>(s0)}, 0.01, 2000);
+        const auto y = integrate(lie_rk4{}, general, {g0, s0}, 0.01, 2000);
+        REQUIRE(x);
+        REQUIRE(y);
+        const double e = std::max(rel(motor<double>(x.state.g), y.state.g), rel(screw<double>(x.state.s), y.state.s));
+        std::printf("gravity, %-28s %.2e\n", name, e);
+        CHECK(e <= 1e-12);
+    };
+    compare.template operator()<sub::full, kind::diagonal>("full, diagonal", tilted, screw<double>{0.3, 1.0, -0.4, 0.2, -0.1, 0.5});
+    compare.template operator()<sub::full, kind::general>("full, general", tilted, screw<double>{0.3, 1.0, -0.4, 0.2, -0.1, 0.5});
+    compare.template operator()<sub::planar, kind::diagonal>("planar, diagonal", flat, screw<double>{0, 0, 1.3, 0.2, -0.1, 0});
 }

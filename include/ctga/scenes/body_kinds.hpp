@@ -34,29 +34,39 @@
 namespace ctga {
 
 namespace subspace {
+// force_type: a force vector f written on a screw's ω blades (e2e3, e3e1, e1e2 ↔ x, y, z), the
+// components a uniform field can have in the subspace; bar(lift(·)) makes it the co-screw (0, f).
 struct full {
     template <class T>
     using screw_type = screw<T>;
     template <class T>
     using motor_type = motor<T>;
+    template <class T>
+    using force_type = cl031::mv<T, "e2e3", "e3e1", "e1e2">;
 };
 struct planar {
     template <class T>
     using screw_type = cl031::mv<T, "e1e2", "e1e", "e2e">;
     template <class T>
     using motor_type = cl031::mv<T, "1", "e1e2", "e1e", "e2e">;
+    template <class T>
+    using force_type = cl031::mv<T, "e2e3", "e3e1">;
 };
 struct rotation {
     template <class T>
     using screw_type = cl031::mv<T, "e2e3", "e3e1", "e1e2">;
     template <class T>
     using motor_type = rotor<T>;
+    template <class T>
+    using force_type = cl031::mv<T, "e2e3", "e3e1", "e1e2">;
 };
 struct translation {
     template <class T>
     using screw_type = cl031::mv<T, "e1e", "e2e", "e3e">;
     template <class T>
     using motor_type = translator<T>;
+    template <class T>
+    using force_type = cl031::mv<T, "e2e3", "e3e1", "e1e2">;
 };
 }  // namespace subspace
 
@@ -159,17 +169,57 @@ inline constexpr auto forced_acceleration = formula([](auto s, auto W, auto... p
 template <class X>
 using lifted_type = std::remove_cvref_t<decltype(eval(lift(std::declval<const X&>())))>;
 
-// ṡ for a body of subspace S and inertia structure K, in S's screw type. The result's blades are
-// those the formula can make non-zero; a body whose inertia would push its velocity out of the
-// subspace does not compile (the assignment names the blade).
-template <class S, class K, class T>
+// ---- applied wrenches ------------------------------------------------------------------------
+
+namespace wrench_model {
+// No applied wrench: no wrench code at all.
+struct none {};
+// A uniform field (gravity): the weight m·a acts at the centre of mass, the body origin. The
+// force is written on the ω blades of S's force_type (fixed frame); see weight().
+template <class T, class S>
+struct uniform_field {
+    typename S::template force_type<T> force;
+};
+}  // namespace wrench_model
+
+// The weight m·a of a body of subspace S in a field of acceleration a (fixed frame).
+template <class S, class T>
+[[nodiscard]] constexpr wrench_model::uniform_field<T, S> weight(const T& m, const vec3<T>& a) noexcept {
+    using F = typename S::template force_type<T>;
+    F f{};
+    if constexpr (F::size() == 3) f = F{m * a[0], m * a[1], m * a[2]};
+    else f = F{m * a[0], m * a[1]};  // planar: the field in the plane of motion
+    return {f};
+}
+
+// A force f (on ω blades, fixed frame) through the body origin, as the body-frame co-screw
+// (0, Rᵀ f): the sandwich g* F g moves F into the body frame (s_b = g* s g, §3) and bar (§5)
+// takes a screw's ω blades to a co-screw's p blades (e2e3 ↦ a2a3, …).
+inline constexpr auto body_frame_force = formula([](auto g, auto F) { return bar(lift(conj(g) * F * g)); });
+template <class S, class T>
+using body_force_type = std::remove_cvref_t<decltype(eval(bar(lift(std::declval<const typename S::template force_type<T>&>()))))>;
+
+// ---- the equation of motion of a body kind ----------------------------------------------------
+
+// ṡ for a body of subspace S and inertia structure K, in S's screw type, free or under a
+// body-frame wrench W. A body moving in a subspace is held there by its constraint, which
+// absorbs the components outside it: ṡ is the projection of the unconstrained ṡ. That is exact
+// when N does not couple the subspace to the rest, i.e. for the kinds with the centre of mass at
+// the body origin on principal axes (sphere, axisymmetric, diagonal); a general inertia needs
+// the full subspace.
+template <class S, class K, class T, class... W>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr typename S::template screw_type<T> body_acceleration(
-    const typename K::template data<T>& body, const typename S::template screw_type<T>& s) noexcept {
-    static_assert(!(std::is_same_v<S, subspace::planar> && std::is_same_v<K, inertia_kind::general>),
-                  "ctga: a planar body needs an inertia with a principal axis along e3 through the centre of mass "
-                  "(inertia_kind::sphere, axisymmetric or diagonal)");
+    const typename K::template data<T>& body, const typename S::template screw_type<T>& s, const W&... wrench) noexcept {
+    static_assert(std::is_same_v<S, subspace::full> || !std::is_same_v<K, inertia_kind::general>,
+                  "ctga: a body held in a subspace (planar, rotation, translation) needs an inertia with the centre of mass "
+                  "at the body origin on principal axes (inertia_kind::sphere, axisymmetric or diagonal)");
     using lifted = lifted_type<typename S::template screw_type<T>>;
-    return std::apply([&](const auto&... p) { return lower(lifted(free_acceleration<K>(s, p...))); }, K::arguments(body));
+    return std::apply(
+        [&](const auto&... p) {
+            if constexpr (sizeof...(W) == 0) return lower(project<lifted>(free_acceleration<K>(s, p...)));
+            else return lower(project<lifted>(forced_acceleration<K>(s, wrench..., p...)));
+        },
+        K::arguments(body));
 }
 
 // dg/dt = ½ g s_b in S's motor type.
@@ -180,32 +230,44 @@ template <class S, class T>
 }
 
 namespace body_kinds_detail {
-template <class K, class Screw, class Arguments>
+template <class Formula, class Screw, class Extra, class Arguments>
 struct acceleration_type;
-template <class K, class Screw, class... P>
-struct acceleration_type<K, Screw, std::tuple<P...>> {
-    using type = decltype(free_acceleration<K>(std::declval<const Screw&>(), std::declval<P>()...));
+template <class Formula, class Screw, class... X, class... P>
+struct acceleration_type<Formula, Screw, std::tuple<X...>, std::tuple<P...>> {
+    using type = decltype(std::declval<const Formula&>()(std::declval<const Screw&>(), std::declval<const X&>()...,
+                                                         std::declval<P>()...));
 };
 }  // namespace body_kinds_detail
 
-// The engine's price of one evaluation of the body-frame rates (ġ, ṡ) of a free body: what one
-// stage of an explicit method costs.
-template <class S, class K, class T = double>
+// The engine's price of one evaluation of the body-frame rates (ġ, ṡ): what one stage of an
+// explicit method costs, the applied wrench included.
+template <class S, class K, class Wrench = wrench_model::none, class T = double>
 inline constexpr expr::cost body_step_cost = [] {
     using screw_t = typename S::template screw_type<T>;
     using motor_t = typename S::template motor_type<T>;
+    using lifted = lifted_type<screw_t>;
     using args = decltype(K::arguments(std::declval<const typename K::template data<T>&>()));
-    using accel = typename body_kinds_detail::acceleration_type<K, screw_t, args>::type;
     using rate = decltype(half * std::declval<const motor_t&>() * std::declval<const screw_t&>());
-    constexpr expr::cost a = cost_of<accel, lifted_type<screw_t>>, r = cost_of<rate, motor_t>;
-    return expr::cost{a.mul + r.mul, a.add + r.add};
+    constexpr expr::cost r = cost_of<rate, motor_t>;
+    if constexpr (std::is_same_v<Wrench, wrench_model::none>) {
+        using accel = typename body_kinds_detail::acceleration_type<decltype(free_acceleration<K>), screw_t, std::tuple<>, args>::type;
+        constexpr expr::cost a = cost_of<accel, lifted>;
+        return expr::cost{a.mul + r.mul, a.add + r.add};
+    } else {
+        using force_t = typename S::template force_type<T>;
+        using W = body_force_type<S, T>;
+        using field = decltype(body_frame_force(std::declval<const motor_t&>(), std::declval<const force_t&>()));
+        using accel = typename body_kinds_detail::acceleration_type<decltype(forced_acceleration<K>), screw_t, std::tuple<W>, args>::type;
+        constexpr expr::cost w = cost_of<field, W>, a = cost_of<accel, lifted>;
+        return expr::cost{a.mul + r.mul + w.mul, a.add + r.add + w.add};
+    }
 }();
 
-// One body of subspace S and inertia structure K as a model for the integrators (body frame,
-// free): every operation of a step runs on S's blades. exp and renormalize go through the
+// One body of subspace S and inertia structure K under a wrench model, as a model for the
+// integrators (body frame): every operation of a step runs on S's blades. exp and renormalize go through the
 // full motor (closed forms of exp_log.hpp and motion.hpp) and drop the blades that S's motions
 // leave at exactly zero.
-template <class T, class S, class K>
+template <class T, class S, class K, class Wrench = wrench_model::none>
 struct body_motion {
     using scalar_type = T;
     using motor_type = typename S::template motor_type<T>;
@@ -213,9 +275,15 @@ struct body_motion {
     static constexpr frame velocity_frame = frame::body;
 
     typename K::template data<T> body;
+    Wrench applied{};
 
-    [[nodiscard]] constexpr screw_type acceleration(const motor_type&, const screw_type& s) const noexcept {
-        return body_acceleration<S, K, T>(body, s);
+    [[nodiscard]] constexpr screw_type acceleration(const motor_type& g, const screw_type& s) const noexcept {
+        if constexpr (std::is_same_v<Wrench, wrench_model::none>) {
+            return body_acceleration<S, K, T>(body, s);
+        } else {
+            const body_force_type<S, T> W = project<body_force_type<S, T>>(body_frame_force(g, applied.force));
+            return body_acceleration<S, K, T>(body, s, W);
+        }
     }
     [[nodiscard]] constexpr motor_type motor_rate(const motor_type& g, const screw_type& s) const noexcept {
         return body_motor_rate<S, T>(g, s);

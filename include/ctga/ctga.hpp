@@ -30,3 +30,4 @@
 #include "ctga/integrators/methods.hpp"
 #include "ctga/integrators/model.hpp"
 #include "ctga/scenes/body_kinds.hpp"
+#include "ctga/scenes/scene.hpp"

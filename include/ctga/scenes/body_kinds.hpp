@@ -256,10 +256,13 @@ inline constexpr expr::cost body_step_cost = [] {
     } else {
         using force_t = typename S::template force_type<T>;
         using W = body_force_type<S, T>;
-        using field = decltype(body_frame_force(std::declval<const motor_t&>(), std::declval<const force_t&>()));
+        using field = decltype(std::declval<const T&>() *
+                               body_frame_force(std::declval<const motor_t&>(), std::declval<const force_t&>()));
+        using norm = decltype(std::declval<const motor_t&>() * conj(std::declval<const motor_t&>()));
         using accel = typename body_kinds_detail::acceleration_type<decltype(forced_acceleration<K>), screw_t, std::tuple<W>, args>::type;
-        constexpr expr::cost w = cost_of<field, W>, a = cost_of<accel, lifted>;
-        return expr::cost{a.mul + r.mul + w.mul, a.add + r.add + w.add};
+        constexpr expr::cost w = cost_of<field, W>, n = cost_of<norm, cl031::mv<T, "1">>, a = cost_of<accel, lifted>;
+        // (and one division: 1/|α|²)
+        return expr::cost{a.mul + r.mul + w.mul + n.mul, a.add + r.add + w.add + n.add};
     }
 }();
 
@@ -281,7 +284,10 @@ struct body_motion {
         if constexpr (std::is_same_v<Wrench, wrench_model::none>) {
             return body_acceleration<S, K, T>(body, s);
         } else {
-            const body_force_type<S, T> W = project<body_force_type<S, T>>(body_frame_force(g, applied.force));
+            // divided by g g* = |α|², so that a motor off g g* = 1 (an RK4 stage) acts as the
+            // rotation it encodes, as map_of does
+            const T inv_norm = T(1) / scalar_part(g * conj(g));
+            const body_force_type<S, T> W = project<body_force_type<S, T>>(inv_norm * body_frame_force(g, applied.force));
             return body_acceleration<S, K, T>(body, s, W);
         }
     }

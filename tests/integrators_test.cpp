@@ -150,7 +150,8 @@ TEST_CASE("float and double runs of the same problem", "[integrators]") {
         const state_of<decltype(model)> x0{some_pose<T>(), screw<T>{T(0.3), T(1), T(-0.4), T(0.2), T(-0.1), T(0.5)}};
         const T E0 = energy_of(b, x0.s);
         T worst = 0;
-        const auto run = integrate(lie_rk4{}, model, x0, T(0.01), 10'000, [&](long long, const auto& x) {
+        const auto run = integrate(lie_rk4{.renormalize = std::is_same_v<T, float>}, model, x0, T(0.01), 10'000,
+                                   [&](long long, const auto& x) {
             worst = std::max(worst, std::abs(energy_of(b, x.s) - E0) / E0);
         });
         REQUIRE(run);
@@ -159,12 +160,13 @@ TEST_CASE("float and double runs of the same problem", "[integrators]") {
     };
     const auto f = energy_error(0.0f);
     const auto d = energy_error(0.0);
-    std::printf("lie_rk4, 1e4 steps of 0.01: energy error float %.2e, double %.2e; |g g* − 1| float %.2e, double %.2e\n",
+    std::printf("lie_rk4, 1e4 steps of 0.01 (float renormalised): energy error float %.2e, double %.2e; "
+                "|g g* − 1| float %.2e, double %.2e\n",
                 f[0], d[0], f[1], d[1]);
     // float: rounding dominates (ε = 1.2e-7 over 1e4 steps); double: the method's truncation error
     CHECK(f[0] <= 1e-5);
     CHECK(d[0] <= 1e-10);
-    CHECK(f[1] <= 1e-4);
+    CHECK(f[1] <= 2e-6);
     CHECK(d[1] <= 1e-13);
 }
 

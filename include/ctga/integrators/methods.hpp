@@ -5,7 +5,8 @@
 //                       renormalised after each step (optional)
 //   lie_rk4             Runge–Kutta–Munthe-Kaas with the classical tableau, order 4: the motor
 //                       is only ever moved by exponentials of screws (§3), so it stays a unit
-//                       motor up to rounding; the velocity is integrated as a vector
+//                       motor up to rounding (in float, renormalise: see the member); the
+//                       velocity is integrated as a vector
 //   implicit_midpoint   the midpoint rule with the pose moved by exp (a Lie midpoint), order 2,
 //                       symmetric; in the body frame it preserves every quadratic invariant of
 //                       the free body's velocity equation: the kinetic energy ½ s_b ∨ (N s_b)
@@ -95,6 +96,9 @@ struct rk4 {
 // θ and the velocity s.
 struct lie_rk4 {
     static constexpr int order = 4;
+    // exp(z) of a small step rounds |α|² − 1 the same way every step, so in float the defect
+    // grows linearly (5.8e-4 after 1e4 steps; double: ~1e-13 after 1e6): renormalise there.
+    bool renormalize = false;
 
     template <motion_model M>
     [[nodiscard]] constexpr checked<state_of<M>> step(const M& model, const state_of<M>& x,
@@ -118,7 +122,9 @@ struct lie_rk4 {
         stage(T(1), K3, L3, K4, L4);
         const T w = h / T(6);
         const screw_t theta(w * (K1 + T(2) * (K2 + K3) + K4));
-        return {{advance_pose(model, x.g, theta), screw_t(x.s + w * (L1 + T(2) * (L2 + L3) + L4))}, input_error::none};
+        state_of<M> y{advance_pose(model, x.g, theta), screw_t(x.s + w * (L1 + T(2) * (L2 + L3) + L4))};
+        if (renormalize) y.g = model.renormalize(y.g);
+        return {y, input_error::none};
     }
 };
 
@@ -131,6 +137,7 @@ struct lie_rk4 {
 struct implicit_midpoint {
     static constexpr int order = 2;
     int max_iterations = 60;
+    bool renormalize = false;  // as for lie_rk4: the pose moves by exp, which drifts in float
 
     template <motion_model M>
     [[nodiscard]] constexpr checked<state_of<M>> step(const M& model, const state_of<M>& x,
@@ -152,7 +159,9 @@ struct implicit_midpoint {
             s1 = next;
             if (change <= eps * scale || (change >= previous && change <= T(1024) * eps * scale)) {
                 const screw_t s_mid(T(1) / T(2) * (x.s + s1));
-                return {{midpoint_pose(s_mid, T(1)), s1}, input_error::none};
+                state_of<M> y{midpoint_pose(s_mid, T(1)), s1};
+                if (renormalize) y.g = model.renormalize(y.g);
+                return {y, input_error::none};
             }
             previous = change;
         }

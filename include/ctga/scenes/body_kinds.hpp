@@ -291,6 +291,18 @@ struct body_motion {
             return body_acceleration<S, K, T>(body, s, W);
         }
     }
+    // The same under an additional body-frame wrench (a scene's springs): only bodies that have
+    // one pay for it.
+    [[nodiscard]] constexpr screw_type acceleration(const motor_type& g, const screw_type& s,
+                                                    const coscrew<T>& extra) const noexcept {
+        if constexpr (std::is_same_v<Wrench, wrench_model::none>) {
+            return body_acceleration<S, K, T>(body, s, extra);
+        } else {
+            const T inv_norm = T(1) / scalar_part(g * conj(g));
+            const coscrew<T> W = inv_norm * body_frame_force(g, applied.force) + extra;
+            return body_acceleration<S, K, T>(body, s, W);
+        }
+    }
     [[nodiscard]] constexpr motor_type motor_rate(const motor_type& g, const screw_type& s) const noexcept {
         return body_motor_rate<S, T>(g, s);
     }

@@ -25,7 +25,9 @@
 
 #include "ctga/integrators/model.hpp"
 #include "ctga/mechanics/exp_log.hpp"
+#include "ctga/mechanics/linear3.hpp"
 #include "ctga/mechanics/motion.hpp"
+#include "ctga/mechanics/spatial.hpp"
 
 namespace ctga {
 
@@ -77,9 +79,56 @@ inline constexpr bool is_moving_body<static_body<T>> = false;
 template <class T>
 inline constexpr bool is_moving_body<kinematic_body<T>> = false;
 
+// A spring–damper of zero rest length between a point of moving body I and a point of moving
+// body J (indices among the scene's moving bodies, in order), or a fixed point of the world
+// (J = world). With p the attachment points and v their velocities in the fixed frame, body I
+// feels f = k (p_J − p_I) + c (v_J − v_I) at its point and body J feels −f at its own; in a
+// body's frame that is the co-screw (a × f_b, f_b), f_b = Rᵀ f, a the attachment (§5: a force
+// through a point). The potential energy is ½ k |p_J − p_I|².
+inline constexpr std::size_t world = static_cast<std::size_t>(-1);
+template <std::size_t I, std::size_t J, class T = double>
+struct spring_damper {
+    static constexpr std::size_t first = I, second = J;
+    vec3<T> at_first;   // on body I, in its frame
+    vec3<T> at_second;  // on body J, in its frame; a fixed point when J == world
+    T stiffness{}, damping{};
+};
+
+namespace scene_detail {
+// A point a of a body (its frame) in the fixed frame, and its velocity: p = R a + t,
+// v = R (v_b + ω_b × a), from the rigid motion the motor encodes (map_of is homogeneous).
+template <class T>
+struct point_motion {
+    vec3<T> p, v;
+};
+template <class T, class G, class Sc>
+constexpr point_motion<T> point_of(const G& g, const Sc& s_b, const vec3<T>& a) noexcept {
+    const motor_map<T> M = map_of(motor<T>(g));
+    const screw<T> s(s_b);
+    const vec3<T> w{s[0], s[1], s[2]};
+    const vec3<T> local = linear3::add(vec3<T>{s[3], s[4], s[5]}, linear3::cross(w, a));
+    return {linear3::add(linear3::apply(M.R, a), M.t), linear3::apply(M.R, local)};
+}
+// The wrench on a body at its attachment a from a fixed-frame force f, in the body's frame.
+template <class T, class G>
+constexpr coscrew<T> wrench_at(const G& g, const vec3<T>& a, const vec3<T>& f) noexcept {
+    const motor_map<T> M = map_of(motor<T>(g));
+    const vec3<T> fb = linear3::apply_transposed(M.R, f);
+    const vec3<T> l = linear3::cross(a, fb);
+    return coscrew<T>{l[0], l[1], l[2], fb[0], fb[1], fb[2]};
+}
+}  // namespace scene_detail
+
+template <class... X>
+struct springs {
+    boost::hana::tuple<X...> list;
+};
+
 // The moving bodies of a scene as one model (body frame) for the integrators of methods.hpp.
-template <class... Models>
-struct scene_model {
+template <class Springs, class... Models>
+struct scene_model;
+template <class... Springs, class... Models>
+struct scene_model<springs<Springs...>, Models...> {
     static_assert(sizeof...(Models) > 0, "ctga: a scene needs at least one moving body");
     static_assert(((Models::velocity_frame == frame::body) && ...), "ctga: scene bodies use body-frame velocities");
     using scalar_type = std::common_type_t<typename Models::scalar_type...>;
@@ -88,6 +137,11 @@ struct scene_model {
     static constexpr frame velocity_frame = frame::body;
 
     boost::hana::tuple<Models...> bodies;
+    springs<Springs...> coupling{};
+
+    // body B is attached to a spring
+    template <std::size_t B>
+    static constexpr bool attached = ((Springs::first == B || Springs::second == B) || ...);
 
     // f(body, parts of the arguments...) for every body, collected into a product of type R.
     template <class R, class F, class... A>
@@ -99,7 +153,47 @@ struct scene_model {
     }
 
     [[nodiscard]] constexpr screw_type acceleration(const motor_type& g, const screw_type& s) const {
-        return each<screw_type>([](const auto& b, const auto& gi, const auto& si) { return b.acceleration(gi, si); }, g, s);
+        return accelerations(g, s, std::make_index_sequence<sizeof...(Models)>{});
+    }
+    template <std::size_t... B>
+    [[nodiscard]] constexpr screw_type accelerations(const motor_type& g, const screw_type& s, std::index_sequence<B...>) const {
+        return {boost::hana::make_tuple(acceleration_of<B>(g, s)...)};
+    }
+    template <std::size_t B>
+    [[nodiscard]] constexpr auto acceleration_of(const motor_type& g, const screw_type& s) const {
+        const auto& body = boost::hana::at_c<B>(bodies);
+        const auto& gb = boost::hana::at_c<B>(g.parts);
+        const auto& sb = boost::hana::at_c<B>(s.parts);
+        if constexpr (!attached<B>) return body.acceleration(gb, sb);
+        else return body.acceleration(gb, sb, spring_wrench<B>(g, s));
+    }
+    // The sum of the springs' wrenches on body B, in its frame.
+    template <std::size_t B>
+    [[nodiscard]] constexpr coscrew<scalar_type> spring_wrench(const motor_type& g, const screw_type& s) const {
+        using T = scalar_type;
+        coscrew<T> total{};
+        boost::hana::for_each(coupling.list, [&](const auto& spring) {
+            using sp = std::remove_cvref_t<decltype(spring)>;
+            if constexpr (sp::first == B || sp::second == B) {
+                const auto& g1 = boost::hana::at_c<sp::first>(g.parts);
+                const auto& s1 = boost::hana::at_c<sp::first>(s.parts);
+                const scene_detail::point_motion<T> a = scene_detail::point_of<T>(g1, s1, spring.at_first);
+                scene_detail::point_motion<T> b{spring.at_second, {}};
+                if constexpr (sp::second != world)
+                    b = scene_detail::point_of<T>(boost::hana::at_c<sp::second>(g.parts), boost::hana::at_c<sp::second>(s.parts),
+                                                  spring.at_second);
+                vec3<T> f{};
+                for (int i = 0; i < 3; ++i)
+                    f[i] = spring.stiffness * (b.p[i] - a.p[i]) + spring.damping * (b.v[i] - a.v[i]);
+                if constexpr (sp::first == B) {
+                    total = coscrew<T>(total + scene_detail::wrench_at(g1, spring.at_first, f));
+                } else {
+                    const vec3<T> minus_f{-f[0], -f[1], -f[2]};
+                    total = coscrew<T>(total + scene_detail::wrench_at(boost::hana::at_c<B>(g.parts), spring.at_second, minus_f));
+                }
+            }
+        });
+        return total;
     }
     [[nodiscard]] constexpr motor_type motor_rate(const motor_type& g, const screw_type& s) const {
         return each<motor_type>([](const auto& b, const auto& gi, const auto& si) { return b.motor_rate(gi, si); }, g, s);
@@ -147,9 +241,10 @@ struct scene {
     }
 };
 
-// Sorts the bodies at compile time: moving ones into the product model, the others aside.
-template <class... Bodies>
-[[nodiscard]] constexpr auto make_scene(const Bodies&... bodies) {
+// Sorts the bodies at compile time: moving ones into the product model, the others aside; the
+// springs (if any) couple moving bodies by their indices among the moving ones.
+template <class... Springs, class... Bodies>
+[[nodiscard]] constexpr auto make_scene(const springs<Springs...>& coupling, const Bodies&... bodies) {
     const auto all = boost::hana::make_tuple(bodies...);
     const auto moving = boost::hana::filter(all, [](const auto& b) {
         return boost::hana::bool_c<is_moving_body<std::remove_cvref_t<decltype(b)>>>;
@@ -158,10 +253,20 @@ template <class... Bodies>
         return boost::hana::bool_c<is_moving_body<std::remove_cvref_t<decltype(b)>>>;
     });
     using model_t = decltype(boost::hana::unpack(moving, [](const auto&... m) {
-        return scene_model<std::remove_cvref_t<decltype(m)>...>{boost::hana::make_tuple(m...)};
+        return scene_model<springs<Springs...>, std::remove_cvref_t<decltype(m)>...>{boost::hana::make_tuple(m...)};
     }));
-    const model_t model = boost::hana::unpack(moving, [](const auto&... m) { return model_t{boost::hana::make_tuple(m...)}; });
+    const model_t model =
+        boost::hana::unpack(moving, [&](const auto&... m) { return model_t{boost::hana::make_tuple(m...), coupling}; });
     return scene<model_t, std::remove_cvref_t<decltype(fixed)>>{model, fixed};
+}
+template <class... Bodies>
+[[nodiscard]] constexpr auto make_scene(const Bodies&... bodies) {
+    return make_scene(springs<>{}, bodies...);
+}
+// The springs of a scene, by value: make_scene(ctga::couple(spring_damper<0, 1>{…}, …), bodies…).
+template <class... X>
+[[nodiscard]] constexpr springs<X...> couple(const X&... x) {
+    return {boost::hana::make_tuple(x...)};
 }
 
 // Body i's part of a product (its motor or its screw).

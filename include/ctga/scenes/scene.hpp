@@ -269,6 +269,12 @@ template <class... X>
     return {boost::hana::make_tuple(x...)};
 }
 
+// f(part) for every body's part of a product, in order.
+template <class... X, class F>
+constexpr void for_each_part(const product<X...>& p, F&& f) {
+    boost::hana::for_each(p.parts, f);
+}
+
 // Body i's part of a product (its motor or its screw).
 template <std::size_t I, class... X>
 [[nodiscard]] constexpr const auto& part(const product<X...>& p) noexcept {

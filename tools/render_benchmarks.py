@@ -25,16 +25,16 @@ TIME_TARGET.update({op: 2.0 for op in ["screw_transform", "coscrew_transform", "
 INSTRUCTION_TARGET = 1.3
 
 
-def medians(path):
+def medians(path, field="real_time"):
     with open(path) as f:
         data = json.load(f)
     out = {}
     for b in data["benchmarks"]:
-        if b.get("aggregate_name") != "median":
+        if b.get("aggregate_name") != "median" or field not in b:
             continue
         op, impl = b["run_name"].split("/")
-        scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b["time_unit"]]
-        out[(op, impl)] = b["real_time"] * scale
+        scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b["time_unit"]] if field == "real_time" else 1.0
+        out[(op, impl)] = b[field] * scale
     return data["context"], out
 
 
@@ -100,6 +100,25 @@ def main():
               "motor_product and eom, ≤ 2 on the three transforms; instructions ≤ 1.3× spatial; dense/ctga",
               "≥ 1000 on momentum. ✓/✗ mark each.", "",
               f"![median time per operation](img/{os.path.basename(out_svg)})", ""]
+    # scenes (issue 7): one RK4 body step per kind, and a batch of 10 000 bodies against a loop
+    kinds = ["full_general", "full_diagonal", "full_sphere", "planar_diagonal", "full_diagonal_gravity",
+             "planar_diagonal_gravity"]
+    if any(("body_step", k) in t for k in kinds):
+        lines += ["## Scenes: what a body kind pays", "",
+                  "One RK4 step of one body (`bench/kinds.cpp`; engine counts per rate evaluation in",
+                  "`docs/design.md` §9), and 10 000 identical bodies stepped in the structure-of-arrays batch",
+                  "against a loop over an array of states (`bench/batch.cpp`, body-steps per second).", "",
+                  "| body kind | RK4 step |", "| --- | --- |"]
+        lines += [f"| {k.replace('_', ', ')} | {fmt_time(t.get(('body_step', k)))} |" for k in kinds]
+        _, rate = medians(results, "items_per_second")
+        pairs = [("full, diagonal", "soa", "soa_fast", "aos"), ("planar, diagonal", "soa_planar", "soa_planar_fast", "aos_planar")]
+        lines += ["", "| batch of 10 000 | SoA | SoA, fast renormalisation | array of structures | SoA / AoS |",
+                  "| --- | --- | --- | --- | --- |"]
+        for name, a, b, c in pairs:
+            ra, rb, rc = (rate.get(("batch_step", x)) for x in (a, b, c))
+            if ra and rc:
+                lines.append(f"| {name} | {ra / 1e6:.1f} M/s | {rb / 1e6:.1f} M/s | {rc / 1e6:.1f} M/s | {ra / rc:.2f} |")
+        lines.append("")
     if os.path.exists(compile_md):
         with open(compile_md) as f:
             lines += ["## Compile time", "", f.read().strip(), ""]

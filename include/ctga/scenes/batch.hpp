@@ -7,44 +7,47 @@
 //
 // Layout. For every component of the motor and of the body-frame velocity screw, one contiguous
 // array over the bodies (8 + 6 arrays for subspace::full, 4 + 3 for planar): component c of body
-// i is g_[c][i]. No heap: std::array storage of a fixed Capacity, a run-time count ≤ Capacity
-// (the object itself is 14 × 8 × Capacity bytes for full bodies in double: place a large batch
-// in static or heap storage yourself).
+// i is g_[c][i]. No heap: std::array storage of a fixed Capacity and a run-time count ≤ Capacity
+// (the object is 14 × 8 × Capacity bytes for full bodies in double: put a large batch in static
+// or heap storage).
 //
-// One set of mass properties. A batch holds N identical bodies: one `K::data<T>` for all of them
+// One set of mass properties. A batch holds identical bodies: one `K::data<T>` for all of them
 // (bodies of one kind with different masses or moments go in different batches). The mass
 // properties are then loop invariants: the reciprocals K::arguments computes on every call of
 // body_acceleration (body_kinds.hpp) are hoisted out of the loop and the inertia's scalars sit
-// in registers, so the per-body work is exactly the equation of motion and nothing else; and
-// every kind, `general` included (60 numbers per body), costs no memory traffic beyond the
-// state.
+// in registers, so the per-body work is the equation of motion and nothing else, and every
+// kind, `general` included (60 numbers per body), costs no memory traffic beyond the state.
 //
-// step_rk4(h) is the classical Runge–Kutta step of ctga::rk4{} on (g, s) in the body frame,
-// with the motor renormalised afterwards, written as one loop over the bodies whose body is
-// straight-line code: load body i's components into ctga multivectors, evaluate the rates with
-// body_motor_rate / body_acceleration (always-inline engine code), combine the stages with the
-// same expressions as rk4::step, renormalise, store. No branch depends on the data, every
-// access is unit-stride, so GCC vectorises the loop across bodies (2 bodies per SSE2 register,
-// 4 or 8 with AVX / AVX-512). The arithmetic is rk4's own, operation for operation, so each body
-// gets the same numbers as ctga::rk4{}.step(body_motion<T, S, K>{body}, x, h) (bit for bit
-// when both are compiled with the same floating-point contraction setting, e.g. ISO -std=c++20).
+// step_rk4(h) is the classical Runge–Kutta step of ctga::rk4{} on (g, s) in the body frame, the
+// motor renormalised afterwards, as loops over the bodies whose bodies are straight-line code:
+// load body i's components into ctga multivectors, evaluate the rates with body_motor_rate and
+// body_acceleration (always-inline engine code), combine the stages with rk4::step's
+// expressions, store; then renormalise. No branch depends on the data and every access is
+// unit-stride, so GCC vectorises every loop across bodies (2 bodies per SSE2 register, 4 or 8
+// with AVX or AVX-512) with no flags beyond -O2/-O3. The arithmetic is rk4's own, operation for
+// operation, so with batch_renormalization::exact (the default) each body gets exactly the
+// numbers of ctga::rk4{}.step(body_motion<T, S, K>{body}, x, h), as long as the compiler forms
+// no fused multiply-adds (GCC contracts a·b + c by default in C++ when the target has FMA, e.g.
+// -march=native, and may do so differently in the two codes: then they agree to rounding).
 //
 // Renormalisation without branches. motion.hpp's renormalize divides g by its dual-number norm
-// after scaling by max |αi|; renormalize_checked branches on non-finite input and on α = 0, and
+// after scaling by max |αi|. renormalize_checked branches on non-finite input and on α = 0, and
 // its √ is std::sqrt, which under the default -fmath-errno compiles to a square-root instruction
-// plus a guarded call to sqrt() (to set errno for a negative argument): control flow that stops
-// GCC from vectorising any loop that contains it. The batch renormalises with the same
-// operations in the same order, assuming finite input, and takes the square root of the scaled
-// |α|² (which lies in [1, 4]) with sqrt_1_4 below: branch-free, vectorisable, and correctly
-// rounded, so it returns exactly what std::sqrt returns. For non-finite input or α = 0 it
-// produces NaNs (never a finite-looking motor).
+// and a guarded call to sqrt() (to set errno for a negative argument): control flow, which stops
+// GCC from vectorising a loop that contains it. The batch assumes finite input and does the
+// same operations in the same order without branches (batch_detail::renormalizer), taking the
+// square root of the scaled |α|² ∈ [1, 4] with sqrt_1_4: branch-free, vectorisable and
+// correctly rounded, i.e. std::sqrt's value. For non-finite input or α = 0 it produces NaNs
+// (never a finite-looking motor). batch_renormalization::fast replaces the 16 divisions per
+// body by one reciprocal and multiplications, and the square root by Newton's iteration for
+// 1/|α|; its motors differ from exact's by a few ulps.
 //
-// Failures. The loop also ORs together, branch-free, a flag per component that is set for a NaN
-// or an infinity (an integer reduction over the bits of the new state, which vectorises too);
-// after the loop, step_rk4 tests it once and returns input_error::non_finite when any body's new
-// state is not finite (first_non_finite() finds the body). The step is not undone: bodies whose
-// state is finite are correct, and a non-finite one stays so. A non-finite h is rejected before
-// anything is stepped.
+// Failures. Each loop that stores also ORs together, branch-free, a flag word per component
+// that marks a NaN or an infinity (an integer reduction over the bits of the new state, which
+// vectorises too); after the loops step_rk4 tests it once and returns input_error::non_finite
+// when any body's new state is not finite (first_non_finite() finds the body). The step is not
+// undone: bodies with finite states are stepped correctly, and a non-finite one stays so. A
+// non-finite h is rejected before anything is stepped.
 //
 // aos_step_rk4 is the array-of-structures reference: ctga::rk4{}.step for each body of a
 // std::array of motion_states (bench/batch.cpp times the two).
@@ -66,6 +69,13 @@
 #include "ctga/scenes/body_kinds.hpp"
 
 namespace ctga {
+
+// How a batch renormalises its motors after a step (see the top of the file).
+enum class batch_renormalization {
+    exact,  // renormalize_checked's operations: the same numbers as ctga::rk4{}, bit for bit
+    fast,   // one division per body (1/max |αi|) and Newton's iteration for 1/|α|: within a
+            // few ulps of exact
+};
 
 namespace batch_detail {
 
@@ -121,8 +131,8 @@ CTGA_ALWAYS_INLINE constexpr void two_product(const T& a, const T& b, T& hi, T& 
 }
 
 // How many Newton steps for 1/√x take the quadratic start below (relative error ≤ 0.030 on
-// [1, 4]) to an error e with e² far below the type's ε (e_{k+1} = 1.5 e_k²): 3 for double and
-// long double, 2 for float.
+// [1, 4]) to an error e with e² far below the type's ε (e_{k+1} = 1.5 e_k²): 3 for float and
+// double (e ≤ 2e-11), 4 for the 64-bit long double.
 template <class T>
 inline constexpr int rsqrt_steps = [] {
     long double e = 0.031L, target = 1.0L;
@@ -134,7 +144,7 @@ inline constexpr int rsqrt_steps = [] {
 
 // √x for x ∈ [1, 4], correctly rounded (the value std::sqrt returns), without a branch:
 //  1. r ≈ 1/√x from a quadratic (relative error ≤ 0.030), then rsqrt_steps Newton steps
-//     r ← r (3/2 − (x/2) r²) (multiplications only): error ≤ 1e-11 for double;
+//     r ← r (3/2 − (x/2) r²) (multiplications only): error ≤ 2e-11 for double;
 //  2. y = x r, and one Newton step for √x on the exact residual x − y² (Dekker's product:
 //     x − hi is exact by Sterbenz's lemma): |y − √x| < ½ ulp + 1e-22, a faithful rounding;
 //  3. the exact rounding. With u = ε (the ulp of [1, 2)), y = Y u and x = X u for integers X, Y
@@ -143,8 +153,9 @@ inline constexpr int rsqrt_steps = [] {
 //     x ≤ y (y − u). √x is never a midpoint. Both products are formed exactly (hi + lo) and
 //     x − hi is exact, so each test is one exact comparison x − hi > lo (resp. ≤), and the
 //     choice is two selects. (At y = 2, x ≤ 4 never rounds up, and 2 − u is y's predecessor.)
-// Outside [1, 4] it returns garbage; for a NaN it returns NaN. In constant evaluation it is
-// motion.hpp's sqrt, as renormalize's is.
+// Outside [1, 4] it returns garbage; for a NaN it returns NaN. It needs IEEE arithmetic as
+// written (not -ffast-math's reassociation). In constant evaluation it is motion.hpp's sqrt,
+// as renormalize's is.
 template <class T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr T sqrt_1_4(const T& x) noexcept {
     if (std::is_constant_evaluated() || !binary_ieee<T>) return motion_detail::sqrt(x);
@@ -165,60 +176,152 @@ template <class T>
     return x - hi_down <= lo_down ? down : out;
 }
 
-// Whether a full motor's component k is in the motor type M (subspace motors hold fewer).
-template <class M>
-inline constexpr std::array<bool, 8> holds = [] {
-    using full = motor<typename M::scalar_type>;
-    std::array<bool, 8> p{};
-    for (std::size_t k = 0; k < 8; ++k) p[k] = M::layout.contains(full::layout.masks[k]);
-    return p;
-}();
+// 1/√x for x ∈ [1, 4] to within a few ulps, without a branch: the quadratic start of sqrt_1_4
+// and Newton steps r ← r (3/2 − (x/2) r²) until the error is at rounding level (one more step
+// than sqrt_1_4 takes before its exact correction).
+template <class T>
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr T rsqrt_1_4(const T& x) noexcept {
+    T r = T(1.3143245040136764) + x * (T(-0.3917463524081892) + x * T(0.0475995054464756));
+    const T half_x = x / T(2);
+    for (int k = 0; k < rsqrt_steps<T> + 1; ++k) r = r * (T(1.5) - half_x * r * r);
+    return r;
+}
 
-// motion.hpp's renormalize without its branches, for finite g with α ≠ 0: scale by max |αi|,
-// divide by |α|, remove the component of β along α̂, with renormalize_checked's operations in
-// its order. Components the motor type does not hold are exact zeros and are skipped (this
-// can change only the sign of a zero result).
-template <class M>
-[[nodiscard]] CTGA_ALWAYS_INLINE constexpr M renormalize_unguarded(const M& g) noexcept {
+// motion.hpp's renormalize without its branches, for a finite g with α ≠ 0, on a motor type M
+// (a full motor or a subspace's), in three stages that the batch runs as three loops:
+//   measure   m = max |αi| and n² = |α/m|² ∈ [1, 4]; exact: α ← α/m (renormalize_checked's
+//             first division), the scale is m; fast: the scale is 1/m
+//   root      exact: n = √(n²) (sqrt_1_4, std::sqrt's value); fast: 1/n (Newton)
+//   apply     exact: g/m/n with renormalize_checked's divisions in its order; fast: g·(1/m)(1/n);
+//             then β ← β − (α̂·β) α̂
+// The motor is handled as its 8 components in motor<T>'s order and orientation (components M
+// does not hold are exact zeros and are skipped, which can change only the sign of a zero).
+template <class M, batch_renormalization Mode>
+struct renormalizer {
     using T = typename M::scalar_type;
     using full = motor<T>;
-    constexpr std::array<bool, 8> p = holds<M>;
-    const full f(g);
-    T m = T(0);
-    static_for<4>([&](auto k) {
-        if constexpr (p[k]) {
-            const T a = f[k] < T(0) ? -f[k] : f[k];
-            m = a > m ? a : m;
-        }
-    });
-    T x[8] = {};
-    static_for<8>([&](auto k) {
-        if constexpr (p[k]) x[k] = f[k] / m;
-    });
-    constexpr std::size_t first = p[0] ? 0 : p[1] ? 1 : p[2] ? 2 : 3;  // every motor type holds some αi
-    T n2 = x[first] * x[first];
-    static_for<4>([&](auto k) {
-        if constexpr (p[k] && k != first) n2 = n2 + x[k] * x[k];
-    });
-    const T n = sqrt_1_4(n2);  // in [1, 2]
-    static_for<8>([&](auto k) {
-        if constexpr (p[k]) x[k] /= n;
-    });
-    constexpr bool coupled = (p[0] && p[4]) || (p[1] && p[5]) || (p[2] && p[6]) || (p[3] && p[7]);
-    if constexpr (coupled) {
-        T d = T(0);
-        bool started = false;  // constant after unrolling
-        static_for<4>([&](auto k) {
-            if constexpr (p[k] && p[k + 4]) {
-                d = started ? d + x[k] * x[k + 4] : x[k] * x[k + 4];
-                started = true;
+
+    // component k of motor<T> is component index[k] of M, times sign[k] (index −1: not held)
+    static constexpr std::array<int, 8> index = [] {
+        std::array<int, 8> out{};
+        for (std::size_t k = 0; k < 8; ++k) out[k] = M::layout.index_of(full::layout.masks[k]);
+        return out;
+    }();
+    static constexpr std::array<int, 8> sign = [] {
+        std::array<int, 8> out{};
+        for (std::size_t k = 0; k < 8; ++k)
+            out[k] = index[k] < 0 ? 0 : M::layout.signs[static_cast<std::size_t>(index[k])] * full::layout.signs[k];
+        return out;
+    }();
+    static constexpr bool held(std::size_t k) noexcept { return index[k] >= 0; }
+    // whether M's component c is one of α's
+    static constexpr std::array<bool, M::size()> alpha_slot = [] {
+        std::array<bool, M::size()> out{};
+        for (std::size_t k = 0; k < 4; ++k)
+            if (index[k] >= 0) out[static_cast<std::size_t>(index[k])] = true;
+        return out;
+    }();
+    static constexpr std::size_t first_alpha = held(0) ? 0 : held(1) ? 1 : held(2) ? 2 : 3;  // every motor has one
+    static constexpr bool coupled = (held(0) && held(4)) || (held(1) && held(5)) || (held(2) && held(6)) || (held(3) && held(7));
+
+    // M's components (any indexable) to motor<T>'s and back
+    template <class C>
+    [[nodiscard]] CTGA_ALWAYS_INLINE static constexpr std::array<T, 8> unpack(const C& c) noexcept {
+        std::array<T, 8> x{};
+        static_for<8>([&](auto k) {
+            if constexpr (held(k)) {
+                const T v = c[static_cast<std::size_t>(index[k])];
+                x[k] = sign[k] > 0 ? v : -v;
             }
         });
-        static_for<4>([&](auto k) {
-            if constexpr (p[k] && p[k + 4]) x[k + 4] -= d * x[k];
+        return x;
+    }
+    template <class C>
+    CTGA_ALWAYS_INLINE static constexpr void pack(const std::array<T, 8>& x, C& c) noexcept {
+        static_for<8>([&](auto k) {
+            if constexpr (held(k)) c[static_cast<std::size_t>(index[k])] = sign[k] > 0 ? x[k] : -x[k];
         });
     }
-    return project<M>(full{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]});
+
+    // Stage 1: returns n² and sets the scale (α is divided by m in exact mode).
+    [[nodiscard]] CTGA_ALWAYS_INLINE static constexpr T measure(std::array<T, 8>& x, T& scale) noexcept {
+        T m = T(0);
+        static_for<4>([&](auto k) {
+            if constexpr (held(k)) {
+                const T a = x[k] > -x[k] ? x[k] : -x[k];  // |x| (as a max: one instruction)
+                m = a > m ? a : m;
+            }
+        });
+        std::array<T, 4> a{};
+        if constexpr (Mode == batch_renormalization::exact) {
+            static_for<4>([&](auto k) {
+                if constexpr (held(k)) a[k] = x[k] = x[k] / m;
+            });
+            scale = m;
+        } else {
+            scale = T(1) / m;
+            static_for<4>([&](auto k) {
+                if constexpr (held(k)) a[k] = x[k] * scale;
+            });
+        }
+        T n2 = a[first_alpha] * a[first_alpha];
+        static_for<4>([&](auto k) {
+            if constexpr (held(k) && k != first_alpha) n2 = n2 + a[k] * a[k];
+        });
+        return n2;
+    }
+
+    // Stage 2.
+    [[nodiscard]] CTGA_ALWAYS_INLINE static constexpr T root(const T& n2) noexcept {
+        if constexpr (Mode == batch_renormalization::exact) return sqrt_1_4(n2);
+        else return rsqrt_1_4(n2);
+    }
+
+    // Stage 3, on measure's output.
+    CTGA_ALWAYS_INLINE static constexpr void apply(std::array<T, 8>& x, const T& scale, const T& root) noexcept {
+        if constexpr (Mode == batch_renormalization::exact) {
+            static_for<8>([&](auto k) {
+                if constexpr (held(k) && k >= 4) x[k] = x[k] / scale;  // β/m (α was divided in measure)
+            });
+            static_for<8>([&](auto k) {
+                if constexpr (held(k)) x[k] /= root;
+            });
+        } else {
+            const T s = scale * root;  // 1/|α|
+            static_for<8>([&](auto k) {
+                if constexpr (held(k)) x[k] = x[k] * s;
+            });
+        }
+        if constexpr (coupled) {
+            T d = T(0);
+            bool started = false;  // a constant once unrolled
+            static_for<4>([&](auto k) {
+                if constexpr (held(k) && held(k + 4)) {
+                    d = started ? d + x[k] * x[k + 4] : x[k] * x[k + 4];
+                    started = true;
+                }
+            });
+            static_for<4>([&](auto k) {
+                if constexpr (held(k) && held(k + 4)) x[k + 4] -= d * x[k];
+            });
+        }
+    }
+
+    // The three stages on one motor.
+    [[nodiscard]] CTGA_ALWAYS_INLINE static constexpr M run(const M& g) noexcept {
+        std::array<T, 8> x = unpack(g);
+        T scale{};
+        const T n2 = measure(x, scale);
+        apply(x, scale, root(n2));
+        M out;
+        pack(x, out);
+        return out;
+    }
+};
+
+template <batch_renormalization Mode = batch_renormalization::exact, class M>
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr M renormalize_unguarded(const M& g) noexcept {
+    return renormalizer<M, Mode>::run(g);
 }
 
 // A flag word that is non-zero in its marked bit when x is NaN or ±∞, built without a branch so
@@ -249,7 +352,7 @@ struct finiteness_flags {
 
 // N ≤ Capacity bodies of subspace S and inertia structure K with one set of mass properties, in
 // structure-of-arrays layout (see the top of this file).
-template <class T, class S, class K, std::size_t Capacity>
+template <class T, class S, class K, std::size_t Capacity, batch_renormalization Renormalization = batch_renormalization::exact>
 class batch {
 public:
     using scalar_type = T;
@@ -307,10 +410,13 @@ public:
         const T h = step;
         if (!is_finite(h)) return input_error::non_finite;
         typename flags::word bad = 0;
+        std::array<T, block> scale{}, root{};  // per body of a block: the scale, and n² then its root
         for (std::size_t first = 0; first < n_; first += block) {
             const std::size_t last = first + block < n_ ? first + block : n_;
             bad |= advance(first, last, h);
-            bad |= renormalize_poses(first, last);
+            measure(first, last, scale, root);
+            for (std::size_t j = 0; j < last - first; ++j) root[j] = renormalizer::root(root[j]);
+            bad |= apply(first, last, scale, root);
         }
         return flags::any(bad) ? input_error::non_finite : input_error::none;
     }
@@ -328,14 +434,16 @@ public:
 
 private:
     using flags = batch_detail::finiteness_flags<T>;
+    using renormalizer = batch_detail::renormalizer<motor_type, Renormalization>;
 
-    // The step runs over blocks of this many bodies, in two loops each: advance (the RK4 stages,
-    // leaving the unnormalised motor in g_) and renormalize_poses. Split, each loop's body is
-    // short enough for the processor to overlap iterations: renormalisation is a chain of
-    // about 40 dependent operations (max, division, the square root's Newton steps, division),
-    // which in one loop with the ~1,000 operations of the stages could not overlap the next
-    // body's work (a single loop was 1.35× slower). A block's motors (8 × 256 doubles) stay in
-    // the L1 cache between the two loops.
+    // The step runs over blocks of this many bodies, in four loops each: advance (the RK4
+    // stages, leaving the unnormalised motors in g_), then the three stages of the
+    // renormalisation (measure, root, apply; batch_detail::renormalizer), the intermediate
+    // numbers in two arrays of a block's length. Each loop's body is then short enough for the
+    // processor to overlap many iterations: the renormalisation is a chain of about 40
+    // dependent operations (max, division, the Newton steps of the root, division), which in
+    // one loop with the stages (~1,000 operations per body) overlapped nothing and took 45% of
+    // the step. A block's motors (8 × 256 numbers) stay in the L1 cache between the loops.
     static constexpr std::size_t block = 256;
 
     // RK4 for bodies [first, last): rk4::step (methods.hpp) with the model's rates written out:
@@ -375,12 +483,34 @@ private:
         return bad;
     }
 
-    // The motors of bodies [first, last) renormalised in place; returns their finiteness flags.
-    CTGA_ALWAYS_INLINE constexpr typename flags::word renormalize_poses(std::size_t first, std::size_t last) noexcept {
-        typename flags::word bad = 0;
+    // Renormalisation, stage 1 for bodies [first, last): the scale and n² of each motor.
+    CTGA_ALWAYS_INLINE constexpr void measure(std::size_t first, std::size_t last, std::array<T, block>& scale,
+                                              std::array<T, block>& n2) noexcept {
         for (std::size_t i = first; i < last; ++i) {
             const motor_type y = load<motor_type>(g_, i, std::make_index_sequence<motor_size>{});
-            const motor_type g = batch_detail::renormalize_unguarded(y);
+            std::array<T, 8> x = renormalizer::unpack(y);
+            n2[i - first] = renormalizer::measure(x, scale[i - first]);
+            if constexpr (Renormalization == batch_renormalization::exact) {  // α/m
+                motor_type out = y;
+                renormalizer::pack(x, out);
+                batch_detail::static_for<motor_size>([&](auto c) {
+                    if constexpr (renormalizer::alpha_slot[c]) g_[c][i] = out[c];
+                });
+            }
+        }
+    }
+
+    // Renormalisation, stage 3: the motors of bodies [first, last) renormalised in place;
+    // returns their finiteness flags.
+    CTGA_ALWAYS_INLINE constexpr typename flags::word apply(std::size_t first, std::size_t last,
+                                                            const std::array<T, block>& scale,
+                                                            const std::array<T, block>& root) noexcept {
+        typename flags::word bad = 0;
+        for (std::size_t i = first; i < last; ++i) {
+            motor_type g = load<motor_type>(g_, i, std::make_index_sequence<motor_size>{});
+            std::array<T, 8> x = renormalizer::unpack(g);
+            renormalizer::apply(x, scale[i - first], root[i - first]);
+            renormalizer::pack(x, g);
             batch_detail::static_for<motor_size>([&](auto c) {
                 g_[c][i] = g[c];
                 bad |= flags::of(g[c]);

@@ -209,15 +209,21 @@ using body_force_type = std::remove_cvref_t<decltype(eval(bar(lift(std::declval<
 // the full subspace.
 template <class S, class K, class T, class... W>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr typename S::template screw_type<T> body_acceleration(
-    const typename K::template data<T>& body, const typename S::template screw_type<T>& s, const W&... wrench) noexcept {
+    const typename K::template data<T>& body, const typename S::template screw_type<T>& s, const W&... applied) noexcept {
     static_assert(std::is_same_v<S, subspace::full> || !std::is_same_v<K, inertia_kind::general>,
                   "ctga: a body held in a subspace (planar, rotation, translation) needs an inertia with the centre of mass "
                   "at the body origin on principal axes (inertia_kind::sphere, axisymmetric or diagonal)");
     using lifted = lifted_type<typename S::template screw_type<T>>;
-    return std::apply(
+    if constexpr (std::is_same_v<K, inertia_kind::general>) {
+        // 24 + 36 blades make one program longer than expr::inline_terms, which would run as a
+        // loop (program.hpp); the typed acceleration stages P and the right-hand side as three
+        // inlined programs, at the same count (78m).
+        if constexpr (sizeof...(W) == 0) return ctga::acceleration(body.N, body.M, s, ctga::wrench<T>{});
+        else return ctga::acceleration(body.N, body.M, s, ctga::wrench<T>(applied...));
+    } else return std::apply(
         [&](const auto&... p) {
             if constexpr (sizeof...(W) == 0) return lower(project<lifted>(free_acceleration<K>(s, p...)));
-            else return lower(project<lifted>(forced_acceleration<K>(s, wrench..., p...)));
+            else return lower(project<lifted>(forced_acceleration<K>(s, applied..., p...)));
         },
         K::arguments(body));
 }
@@ -273,6 +279,7 @@ inline constexpr expr::cost body_step_cost = [] {
 template <class T, class S, class K, class Wrench = wrench_model::none>
 struct body_motion {
     using scalar_type = T;
+    using subspace_type = S;
     using motor_type = typename S::template motor_type<T>;
     using screw_type = typename S::template screw_type<T>;
     static constexpr frame velocity_frame = frame::body;

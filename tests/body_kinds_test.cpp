@@ -87,12 +87,20 @@ TEST_CASE("cost of one body step per subspace and inertia structure", "[scenes][
     report<sub::full, kind::axisymmetric>("full, axisymmetric");
     report<sub::full, kind::sphere>("full, sphere");
     report<sub::planar, kind::diagonal>("planar, diagonal");
+    report<sub::planar, kind::axisymmetric>("planar, axisymmetric");
     report<sub::planar, kind::sphere>("planar, sphere");
+    report<sub::rotation, kind::axisymmetric>("rotation, axisymmetric");
+    report<sub::rotation, kind::sphere>("rotation, sphere");
+    report<sub::translation, kind::diagonal>("translation, diagonal");
     report<sub::rotation, kind::diagonal>("rotation, diagonal");
     report<sub::translation, kind::sphere>("translation, sphere");
     report<sub::full, kind::general, gravity<sub::full>>("full, general, gravity");
     report<sub::full, kind::diagonal, gravity<sub::full>>("full, diagonal, gravity");
+    report<sub::full, kind::axisymmetric, gravity<sub::full>>("full, axisymmetric, gravity");
+    report<sub::full, kind::sphere, gravity<sub::full>>("full, sphere, gravity");
     report<sub::planar, kind::diagonal, gravity<sub::planar>>("planar, diagonal, gravity");
+    report<sub::planar, kind::sphere, gravity<sub::planar>>("planar, sphere, gravity");
+    report<sub::translation, kind::sphere, gravity<sub::translation>>("translation, sphere, gravity");
     CHECK(step<sub::full, kind::general>.mul == 122);  // = ½ g s (44m) + the typed acceleration (78m)
 }
 

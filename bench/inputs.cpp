@@ -60,7 +60,7 @@ input_batches make_inputs(std::size_t n, unsigned seed) {
         const ctga::coscrew<> P = coscrew(), W = coscrew();
         const ctga::motor_map<> G = ctga::map_of(g);
 
-        out.ctga.push_back({*body, g, g2, G, s, s2, P, W});
+        out.ctga.push_back({*body, ctga::body_inertia_of(body->mass), g, g2, G, s, s2, P, W});
 
         const ctga::mat3<double> J = ctga::linear3::inverse_symmetric(body->mass.inertia_c);
         spatial::se3 X{{v3(G.R[0][0], G.R[0][1], G.R[0][2]), v3(G.R[1][0], G.R[1][1], G.R[1][2]),

@@ -30,6 +30,7 @@ inline constexpr double step_size = 1e-3;
 
 struct ctga_inputs {
     ctga::rigid_body<> body;
+    ctga::body_inertia<> N;  // the body's N by its ten parameters (m, m c, I_o)
     ctga::motor<> g, g2;
     ctga::motor_map<> G;  // the sandwich by g, built once
     ctga::screw<> s, s2;
@@ -107,7 +108,7 @@ spatial::force coscrew_transform(const spatial_inputs&);
 vec6 coscrew_transform(const eigen_inputs&);
 dense_mv coscrew_transform(const dense_inputs&);
 
-ctga::rigid_inertia<> inertia_transform(const ctga_inputs&);  // (g ḡ) N (g ḡ)*
+ctga::body_inertia<> inertia_transform(const ctga_inputs&);  // (g ḡ) N (g ḡ)*
 spatial::inertia inertia_transform(const spatial_inputs&);
 mat6 inertia_transform(const eigen_inputs&);
 dense_mv inertia_transform(const dense_inputs&);

@@ -18,6 +18,7 @@
 #include "ctga/expr/program.hpp"
 #include "ctga/expr/rational.hpp"
 #include "ctga/mechanics/motion.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/checked.hpp"
 #include "ctga/mechanics/convert.hpp"
 #include "ctga/mechanics/dynamics.hpp"

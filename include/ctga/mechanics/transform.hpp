@@ -42,24 +42,28 @@ template <class T>
     return {b.mass, linear3::add(linear3::apply(G.R, b.com), G.t), linear3::rotate_symmetric(G.R, b.inertia_c)};
 }
 
-// (g ḡ) N (g ḡ)* = H⁻ᵀ N H⁻¹ for a rigid body's N = [[I_o, Ĥ], [−Ĥ, m 1]] (h = m c):
-// m' = m, h' = R h + m t and, with u = R h + h' (= 2z for z = R h + (m/2) t),
+namespace transform_detail {
+
+// A rigid body's inertia parameters moved by a motor map: the mass is unchanged, and
+template <class T>
+struct moved_inertia {
+    vec3<T> h;                        // h' = R h + m t
+    T xx, yy, zz, xy, xz, yz;         // I_o'
+};
+// (g ḡ) N (g ḡ)* = H⁻ᵀ N H⁻¹ for N = [[I_o, Ĥ], [−Ĥ, m 1]] (h = m c): m' = m, h' = R h + m t and,
+// with u = R h + h' (= 2z for z = R h + (m/2) t),
 //   I_o' = R I_o Rᵀ + (u·t) 1 − (t uᵀ + u tᵀ)/2   (parallel axes: Ĉ² terms of c and of R c + t),
 // i.e. Σ_{k≠i} t_k u_k added on the diagonal and −(t_i u_j + u_i t_j)/2 off it.
 // (R I_o Rᵀ)_ij = R_i·(I_o R_j) for the rows R_i of R; R is a rotation, so tr(R I_o Rᵀ) = tr I_o
 // gives the last diagonal entry and only I_o R_0 and I_o R_1 are formed (54m 50a, 3 halvings).
+// The statement order (R I_o Rᵀ first, then h' and the parallel-axis terms) keeps the live values
+// few: other orders measured 10–25 more instructions (spills) with g++ 12.
 template <class T>
-[[nodiscard]] constexpr rigid_inertia<T> transform(const motor_map<T>& G, const rigid_inertia<T>& N) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr moved_inertia<T> move_inertia(const motor_map<T>& G, const T& m, const vec3<T>& h,
+                                                                         const mat3<T>& Io) noexcept {
     using linear3::dot;
-    using spatial_detail::entry_of;
-    using spatial_detail::set_entry;
     const mat3<T>& R = G.R;
     const vec3<T>& t = G.t;
-    const T m = entry_of<false, 3, 3>(N);
-    const vec3<T> h{entry_of<false, 2, 4>(N), entry_of<false, 0, 5>(N), entry_of<false, 1, 3>(N)};  // m Ĉ = Ĥ
-    const mat3<T> Io{{{entry_of<false, 0, 0>(N), entry_of<false, 0, 1>(N), entry_of<false, 0, 2>(N)},
-                      {entry_of<false, 1, 0>(N), entry_of<false, 1, 1>(N), entry_of<false, 1, 2>(N)},
-                      {entry_of<false, 2, 0>(N), entry_of<false, 2, 1>(N), entry_of<false, 2, 2>(N)}}};
     // R I_o Rᵀ, column by column
     const vec3<T> a0 = linear3::apply(Io, R[0]);
     const T r00 = dot(R[0], a0), r20 = dot(R[2], a0);
@@ -74,13 +78,30 @@ template <class T>
     const T xz = r20 - (t[0] * u[2] + u[0] * t[2]) / T(2);
     const T yz = r21 - (t[1] * u[2] + u[1] * t[2]) / T(2);
     const vec3<T> q{t[0] * u[0], t[1] * u[1], t[2] * u[2]};
+    return {h2, r00 + (q[1] + q[2]), r11 + (q[0] + q[2]), r22 + (q[0] + q[1]), xy, xz, yz};
+}
+
+}  // namespace transform_detail
+
+// (g ḡ) N (g ḡ)* for the 24 stored blades of a rigid body's N (transform_detail::move_inertia).
+template <class T>
+[[nodiscard]] constexpr rigid_inertia<T> transform(const motor_map<T>& G, const rigid_inertia<T>& N) noexcept {
+    using spatial_detail::entry_of;
+    using spatial_detail::set_entry;
+    const T m = entry_of<false, 3, 3>(N);
+    const vec3<T> h{entry_of<false, 2, 4>(N), entry_of<false, 0, 5>(N), entry_of<false, 1, 3>(N)};  // m Ĉ = Ĥ
+    const mat3<T> Io{{{entry_of<false, 0, 0>(N), entry_of<false, 0, 1>(N), entry_of<false, 0, 2>(N)},
+                      {entry_of<false, 1, 0>(N), entry_of<false, 1, 1>(N), entry_of<false, 1, 2>(N)},
+                      {entry_of<false, 2, 0>(N), entry_of<false, 2, 1>(N), entry_of<false, 2, 2>(N)}}};
+    const transform_detail::moved_inertia<T> n = transform_detail::move_inertia(G, m, h, Io);
+    const vec3<T>& h2 = n.h;
     rigid_inertia<T> out;
-    set_entry<false, 0, 0>(out, r00 + (q[1] + q[2]));
-    set_entry<false, 1, 1>(out, r11 + (q[0] + q[2]));
-    set_entry<false, 2, 2>(out, r22 + (q[0] + q[1]));
-    set_entry<false, 0, 1>(out, xy), set_entry<false, 1, 0>(out, xy);
-    set_entry<false, 0, 2>(out, xz), set_entry<false, 2, 0>(out, xz);
-    set_entry<false, 1, 2>(out, yz), set_entry<false, 2, 1>(out, yz);
+    set_entry<false, 0, 0>(out, n.xx);
+    set_entry<false, 1, 1>(out, n.yy);
+    set_entry<false, 2, 2>(out, n.zz);
+    set_entry<false, 0, 1>(out, n.xy), set_entry<false, 1, 0>(out, n.xy);
+    set_entry<false, 0, 2>(out, n.xz), set_entry<false, 2, 0>(out, n.xz);
+    set_entry<false, 1, 2>(out, n.yz), set_entry<false, 2, 1>(out, n.yz);
     // m Ĉ' = Ĥ' in the upper right, −Ĥ' in the lower left; m 1 in the mass block
     set_entry<false, 0, 4>(out, -h2[2]), set_entry<false, 0, 5>(out, h2[1]), set_entry<false, 1, 3>(out, h2[2]);
     set_entry<false, 1, 5>(out, -h2[0]), set_entry<false, 2, 3>(out, -h2[1]), set_entry<false, 2, 4>(out, h2[0]);

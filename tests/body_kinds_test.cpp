@@ -10,10 +10,13 @@
 #include <ctga/scenes/body_kinds.hpp>
 
 #include "support/catch.hpp"
+#include "support/general_reference.hpp"
 
 namespace {
 
 using namespace ctga;
+using ctga::test::general_gravity;
+using ctga::test::rel;
 namespace sub = ctga::subspace;
 namespace kind = ctga::inertia_kind;
 
@@ -39,17 +42,6 @@ template <class S, class K, class W = wrench_model::none>
 void report(const char* name) {
     constexpr expr::cost c = step<S, K, W>;
     std::printf("body step %-28s %3zum %3zua\n", name, static_cast<std::size_t>(c.mul), static_cast<std::size_t>(c.add));
-}
-
-double rel(const motor<double>& a, const motor<double>& b) {
-    double d = 0, s = 1;
-    for (std::size_t i = 0; i < 8; ++i) d = std::max(d, std::abs(a[i] - b[i])), s = std::max(s, std::abs(b[i]));
-    return d / s;
-}
-double rel(const screw<double>& a, const screw<double>& b) {
-    double d = 0, s = 1;
-    for (std::size_t i = 0; i < 6; ++i) d = std::max(d, std::abs(a[i] - b[i])), s = std::max(s, std::abs(b[i]));
-    return d / s;
 }
 
 // The kind's body and the same body as general mass properties (centre of mass at the origin,
@@ -134,17 +126,6 @@ TEST_CASE("every body kind follows the general 3D code's trajectory to 1e-12", "
     }
     std::printf("worst difference from the general code: %.2e\n", worst);
 }
-
-// The general code's gravity, written independently: (0, Rᵀ m a) from the rotation of map_of(g).
-struct general_gravity {
-    vec3<double> weight;
-    wrench<double> operator()(const motor<double>& g, const screw<double>&) const {
-        const motor_map<double> G = map_of(g);
-        vec3<double> f{};
-        for (int i = 0; i < 3; ++i) f[i] = G.R[0][i] * weight[0] + G.R[1][i] * weight[1] + G.R[2][i] * weight[2];
-        return wrench<double>{0, 0, 0, f[0], f[1], f[2]};
-    }
-};
 
 TEST_CASE("under gravity, the body kinds follow the general 3D code to 1e-12", "[scenes]") {
     const vec3<double> a{0.3, -9.81, 0.0};  // in the e1, e2 plane, so the planar body feels all of it

@@ -20,6 +20,7 @@
 #include <ctga/mechanics/motion.hpp>
 
 #include "support/catch.hpp"
+#include "support/general_reference.hpp"
 
 // Calls on plain numbers stay std's under both using-directives: ctga::exp and ctga::log take
 // ctga types only, so they are not viable for a double (and calls on screws find ctga's).
@@ -40,16 +41,7 @@ using ld = long double;
 
 constexpr double pi = 3.14159265358979323846;
 
-template <class X, class Y>
-double rel(const X& x, const Y& y) {
-    static_assert(X::size() == Y::size());
-    long double d = 0, m = 1;
-    for (std::size_t i = 0; i < X::size(); ++i) {
-        d = std::max(d, std::fabs(static_cast<long double>(x[i]) - static_cast<long double>(y[i])));
-        m = std::max(m, std::fabs(static_cast<long double>(y[i])));
-    }
-    return static_cast<double>(d / m);
-}
+using ctga::test::rel;  // support/general_reference.hpp
 // Against g or −g, the same rigid motion.
 template <class X, class Y>
 double rel_pm(const X& x, const Y& y) {

@@ -69,6 +69,7 @@
 #include <ctga/reference/dense.hpp>
 
 #include "support/catch.hpp"
+#include "support/general_reference.hpp"
 #include "support/dense_model.hpp"
 #include "support/matrix_model.hpp"
 
@@ -79,16 +80,7 @@ namespace ct = ctga::test;
 
 // ---- measuring ---------------------------------------------------------------------------------
 
-template <class X, class Y>
-double rel(const X& x, const Y& y) {
-    static_assert(X::size() == Y::size());
-    long double d = 0, m = 1;
-    for (std::size_t i = 0; i < X::size(); ++i) {
-        d = std::max(d, std::fabs(static_cast<long double>(x[i]) - static_cast<long double>(y[i])));
-        m = std::max(m, std::fabs(static_cast<long double>(y[i])));
-    }
-    return static_cast<double>(d / m);
-}
+using ctga::test::rel;  // support/general_reference.hpp
 // The same over all components of two arrays of numbers (y the reference).
 template <class T, std::size_t N>
 double rel_all(const std::array<T, N>& x, const std::array<T, N>& y) {

@@ -1,5 +1,6 @@
-// What the scene tests compare against: the relative difference of two elements, and gravity for
-// the general 3D code written independently of the scenes' field wrench.
+// What the tests compare with: the relative difference of two elements (the error measure of
+// exp_log_test, the representations and the scene tests), and gravity for the general 3D code
+// written independently of the scenes' field wrench.
 #pragma once
 
 #include <algorithm>
@@ -10,12 +11,16 @@
 
 namespace ctga::test {
 
-// max_i |x_i − y_i| / max(1, max_i |y_i|) over the components of two elements of one type.
-template <class X>
-double rel(const X& x, const X& y) {
-    double d = 0, s = 1;
-    for (std::size_t i = 0; i < x.size(); ++i) d = std::max(d, double(std::abs(x[i] - y[i]))), s = std::max(s, double(std::abs(y[i])));
-    return d / s;
+// max_i |x_i − y_i| / max(1, max_i |y_i|) over the components of two elements with the same
+// components (y the reference), in long double.
+template <class X, class Y>
+double rel(const X& x, const Y& y) {
+    long double d = 0, m = 1;
+    for (std::size_t i = 0; i < y.size(); ++i) {
+        d = std::max(d, std::fabs(static_cast<long double>(x[i]) - static_cast<long double>(y[i])));
+        m = std::max(m, std::fabs(static_cast<long double>(y[i])));
+    }
+    return static_cast<double>(d / m);
 }
 
 // A uniform field on a body whose centre of mass is its origin, in the body frame: (0, Rᵀ m a),

@@ -13,7 +13,8 @@
 //   planar        ω_z, v_x, v_y: e1e2 e1e e2e   1 e1e2 e1e e2e     (motion in the e1, e2 plane)
 //   rotation      e2e3 e3e1 e1e2                rotor               (about the body origin)
 //   translation   e1e e2e e3e                   translator
-// Inertia structures (body frame at the centre of mass, principal axes; the scalars each has):
+// Inertia structures (body frame at the centre of mass, principal axes; the scalars each has,
+// and their reciprocals for the mobility, computed once when the data is made):
 //   sphere        m, d                 N = d·(rotation block) + m·(mass block)
 //   axisymmetric  m, d_xy, d_z         about the body's e3 axis
 //   diagonal      m, dx, dy, dz        principal axes (§5's diagonal inertia)
@@ -85,10 +86,11 @@ struct sphere {
     template <class T>
     struct data {
         T m, d;
+        T inv_m = T(1) / m, inv_d = T(1) / d;  // set once, from the members above
     };
     template <class T>
     static constexpr auto arguments(const data<T>& b) noexcept {
-        return std::tuple{scalar<T>{b.d}, scalar<T>{b.m}, scalar<T>{T(1) / b.d}, scalar<T>{T(1) / b.m}};
+        return std::tuple{scalar<T>{b.d}, scalar<T>{b.m}, scalar<T>{b.inv_d}, scalar<T>{b.inv_m}};
     }
     static constexpr auto N = [](auto d, auto m, auto, auto) { return d * rotation_block + m * mass_block; };
     static constexpr auto M = [](auto, auto, auto inv_d, auto inv_m) { return inv_d * mass_block + inv_m * rotation_block; };
@@ -98,11 +100,12 @@ struct axisymmetric {  // about e3
     template <class T>
     struct data {
         T m, d_xy, d_z;
+        T inv_m = T(1) / m, inv_d_xy = T(1) / d_xy, inv_d_z = T(1) / d_z;  // set once
     };
     template <class T>
     static constexpr auto arguments(const data<T>& b) noexcept {
-        return std::tuple{scalar<T>{b.d_xy}, scalar<T>{b.d_z}, scalar<T>{b.m}, scalar<T>{T(1) / b.d_xy},
-                          scalar<T>{T(1) / b.d_z}, scalar<T>{T(1) / b.m}};
+        return std::tuple{scalar<T>{b.d_xy},     scalar<T>{b.d_z},     scalar<T>{b.m},
+                          scalar<T>{b.inv_d_xy}, scalar<T>{b.inv_d_z}, scalar<T>{b.inv_m}};
     }
     static constexpr auto N = [](auto dxy, auto dz, auto m, auto, auto, auto) {
         return dxy * (cl062::basis<"a1ae1e"> + cl062::basis<"a2ae2e">) + dz * cl062::basis<"a3ae3e"> + m * mass_block;
@@ -117,12 +120,12 @@ struct diagonal {
     template <class T>
     struct data {
         T m, dx, dy, dz;
+        T inv_m = T(1) / m, inv_dx = T(1) / dx, inv_dy = T(1) / dy, inv_dz = T(1) / dz;  // set once
     };
     template <class T>
     static constexpr auto arguments(const data<T>& b) noexcept {
-        return std::tuple{scalar<T>{b.dx},         scalar<T>{b.dy},         scalar<T>{b.dz},
-                          scalar<T>{b.m},          scalar<T>{T(1) / b.dx}, scalar<T>{T(1) / b.dy},
-                          scalar<T>{T(1) / b.dz}, scalar<T>{T(1) / b.m}};
+        return std::tuple{scalar<T>{b.dx},     scalar<T>{b.dy},     scalar<T>{b.dz},     scalar<T>{b.m},
+                          scalar<T>{b.inv_dx}, scalar<T>{b.inv_dy}, scalar<T>{b.inv_dz}, scalar<T>{b.inv_m}};
     }
     static constexpr auto N = [](auto dx, auto dy, auto dz, auto m, auto, auto, auto, auto) {
         return dx * cl062::basis<"a1ae1e"> + dy * cl062::basis<"a2ae2e"> + dz * cl062::basis<"a3ae3e"> + m * mass_block;

@@ -53,7 +53,7 @@ void soa(benchmark::State& state) {
     batch_t* p = b.get();
     benchmark::DoNotOptimize(p);
     for (auto _ : state) {
-        ctga::input_error e = p->step_rk4(h);
+        ctga::error_code e = p->step_rk4(h);
         benchmark::DoNotOptimize(e);
         benchmark::ClobberMemory();
     }
@@ -71,7 +71,7 @@ void aos(benchmark::State& state) {
     auto* p = states.get();
     benchmark::DoNotOptimize(p);
     for (auto _ : state) {
-        ctga::input_error e = ctga::aos_step_rk4(model, *p, h);
+        ctga::error_code e = ctga::aos_step_rk4(model, *p, h);
         benchmark::DoNotOptimize(e);
         benchmark::ClobberMemory();
     }

@@ -8,7 +8,7 @@
 // renormalisation. The body-frame rates are products and sums only (ṡ from N, M and s; ġ = ½ g s),
 // so the run without renormalisation is bit-identical at compile time and at run time.
 // Renormalisation takes a square root, which ctga computes by Newton's iteration in constant
-// evaluation and by std::sqrt at run time (ctga/mechanics/motion.hpp, motion_detail::sqrt); the
+// evaluation and by std::sqrt at run time (ctga/mechanics/motor.hpp, motion_detail::sqrt); the
 // two round differently for some inputs (Newton's result is 1 ulp off for ~25% of inputs near 1),
 // so the renormalised motor ends a few tens of ulps apart while the velocity, which does not
 // depend on the pose in the body frame, stays bit-identical. With a correctly rounded constant-

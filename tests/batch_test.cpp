@@ -1,7 +1,7 @@
 // Many bodies of one kind in structure-of-arrays layout (include/ctga/scenes/batch.hpp): the
 // batch's RK4 step gives each body the states of ctga::integrate(ctga::rk4{}, body_motion, …),
 // its branch-free square root is std::sqrt's correctly rounded result, its renormalisation is
-// motion.hpp's, and a NaN or an infinity in one body is reported by the step.
+// motor.hpp's, and a NaN or an infinity in one body is reported by the step.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -62,7 +62,7 @@ void same_as_rk4(const char* name) {
         REQUIRE(b->add(start.back()));
     }
     REQUIRE(b->size() == bodies);
-    for (long long k = 0; k < steps; ++k) REQUIRE(b->step_rk4(h) == input_error::none);
+    for (long long k = 0; k < steps; ++k) REQUIRE(b->step_rk4(h) == error_code::none);
 
     const body_motion<double, S, kind::diagonal> model{box};
     double worst = 0;
@@ -82,13 +82,13 @@ void same_as_rk4(const char* name) {
 static_assert(batch_detail::rsqrt_steps<float> == 3 && batch_detail::rsqrt_steps<double> == 3 &&
               batch_detail::rsqrt_steps<long double> == 4);
 
-// In constant evaluation too, the batch's step is rk4's (both take motion.hpp's √ there).
+// In constant evaluation too, the batch's step is rk4's (both take motor.hpp's √ there).
 constexpr bool constexpr_step_is_rk4 = [] {
     const motor<double> g{0.9, 0.1, -0.2, 0.3, 0.05, 0.5, -0.1, 0.1};  // drifted: renormalisation matters
     const screw<double> s{0.3, 1.0, -0.4, 0.2, -0.1, 0.5};
     batch<double, sub::full, kind::diagonal, 3> b{box};
     b.add(g, s);
-    if (b.step_rk4(0.01) != input_error::none) return false;
+    if (b.step_rk4(0.01) != error_code::none) return false;
     const auto one = rk4{}.step(body_motion<double, sub::full, kind::diagonal>{box}, {g, s}, 0.01).value;
     for (std::size_t c = 0; c < 8; ++c)
         if (b.pose(0)[c] != one.g[c]) return false;
@@ -162,7 +162,7 @@ constexpr double contraction_tolerance = 4 * std::numeric_limits<double>::epsilo
 constexpr double contraction_tolerance = 0;
 #endif
 
-TEST_CASE("the batch's branch-free renormalisation is motion.hpp's renormalize", "[scenes][batch]") {
+TEST_CASE("the batch's branch-free renormalisation is motor.hpp's renormalize", "[scenes][batch]") {
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> u(-1.0, 1.0);
     double worst = 0;
@@ -205,11 +205,11 @@ void reports_non_finite() {
     auto b = std::make_unique<batch_t>(box);
     std::mt19937_64 rng(3);
     for (int i = 0; i < 50; ++i) REQUIRE(b->add(random_state<sub::full>(rng)));
-    REQUIRE(b->step_rk4(0.01) == input_error::none);
+    REQUIRE(b->step_rk4(0.01) == error_code::none);
     REQUIRE(b->first_non_finite() == b->size());
 
     const batch_t before = *b;
-    CHECK(b->step_rk4(std::numeric_limits<double>::quiet_NaN()) == input_error::non_finite);  // nothing stepped
+    CHECK(b->step_rk4(std::numeric_limits<double>::quiet_NaN()) == error_code::non_finite);  // nothing stepped
     CHECK(rel(b->pose(0), before.pose(0)) == 0);
 
     // a NaN in body 37's velocity: reported after the step, and the other bodies are stepped
@@ -217,25 +217,25 @@ void reports_non_finite() {
     screw<double> s = b->velocity(37);
     s[4] = std::numeric_limits<double>::quiet_NaN();
     b->set(37, b->pose(37), s);
-    CHECK(b->step_rk4(0.01) == input_error::non_finite);
+    CHECK(b->step_rk4(0.01) == error_code::non_finite);
     CHECK(b->first_non_finite() == 37);
     for (std::size_t i : {std::size_t(0), std::size_t(36), std::size_t(38), std::size_t(49)}) {
         const auto one = rk4{}.step(model, before.state(i), 0.01);
         CHECK(rel(b->pose(i), one.value.g) <= 1e-15);
         CHECK(rel(b->velocity(i), one.value.s) <= 1e-15);
     }
-    CHECK(b->step_rk4(0.01) == input_error::non_finite);  // it stays non-finite
+    CHECK(b->step_rk4(0.01) == error_code::non_finite);  // it stays non-finite
 
     // an infinity in a motor, and a motor with no rotation part (α = 0: not a motor)
     *b = before;
     motor<double> g = b->pose(5);
     g[6] = std::numeric_limits<double>::infinity();
     b->set(5, g, b->velocity(5));
-    CHECK(b->step_rk4(0.01) == input_error::non_finite);
+    CHECK(b->step_rk4(0.01) == error_code::non_finite);
     CHECK(b->first_non_finite() == 5);
     *b = before;
     b->set(9, motor<double>{0, 0, 0, 0, 0.1, 0.2, 0.3, 0.4}, screw<double>{});
-    CHECK(b->step_rk4(0.01) == input_error::non_finite);
+    CHECK(b->step_rk4(0.01) == error_code::non_finite);
     CHECK(b->first_non_finite() == 9);
 }
 
@@ -257,7 +257,7 @@ TEST_CASE("a batch of several blocks (and a partial one) steps every body", "[sc
     }
     const body_motion<double, sub::full, kind::diagonal> model{box};
     for (int k = 0; k < 10; ++k) {
-        REQUIRE(b->step_rk4(0.01) == input_error::none);
+        REQUIRE(b->step_rk4(0.01) == error_code::none);
         for (auto& y : x) y = rk4{}.step(model, y, 0.01).value;
     }
     double worst = 0;
@@ -281,10 +281,10 @@ TEST_CASE("a batch holds at most its capacity; the AoS reference steps like rk4"
     using model_t = body_motion<double, sub::planar, kind::diagonal>;
     const model_t model{box};
     std::array<state_of<model_t>, 3> states{x, x, x};
-    CHECK(aos_step_rk4(model, states, 0.01) == input_error::none);
+    CHECK(aos_step_rk4(model, states, 0.01) == error_code::none);
     const auto one = rk4{}.step(model, x, 0.01);
     CHECK(rel(states[1].g, one.value.g) == 0);
     CHECK(rel(states[1].s, one.value.s) == 0);
     states[2].s[0] = std::numeric_limits<double>::quiet_NaN();
-    CHECK(aos_step_rk4(model, states, 0.01) == input_error::non_finite);
+    CHECK(aos_step_rk4(model, states, 0.01) == error_code::non_finite);
 }

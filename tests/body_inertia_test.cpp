@@ -20,8 +20,7 @@ double rel(const X& x, const Y& y) {
 }
 }  // namespace
 
-static_assert(cost_of<decltype(with_parameters(paper::momentum_of_parameters, std::declval<const screw<>&>(),
-                                               std::declval<const body_inertia<>&>())),
+static_assert(cost_of<decltype(momentum.formula(std::declval<const body_inertia<>&>(), std::declval<const screw<>&>())),
                       coscrew<>> == expr::cost{24, 18},
               "ten parameters, the same 24m 18a as the 24 stored blades");
 

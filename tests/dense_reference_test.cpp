@@ -1,6 +1,6 @@
 // Tests of the naive dense reference (ctga::dense), the oracle of the sparse engine.
 // Every expectation is an independent, hand-known fact (quaternion rules, the paper's worked
-// examples, the identities of shared/reference/conventions.md), never the oracle against itself.
+// examples, the paper's identities of §5–6), never the oracle against itself.
 #include "support/catch.hpp"
 
 #include <array>
@@ -208,7 +208,7 @@ TEST_CASE("shuffle product: the paper's two examples and basic facts", "[dense]"
     }
 }
 
-TEST_CASE("Cl(0,6,2) identities 2-6 of conventions.md with concrete numbers", "[dense]") {
+TEST_CASE("Cl(0,6,2) identities 2-6 of the paper with concrete numbers", "[dense]") {
     const vec3 w{2, 3, 5}, v{7, 11, 13}, l{17, 19, 23}, p{29, 31, 37}, d{41, 43, 47};
     const double m = 53;
     const auto s = screw<cl062>(w, v);
@@ -244,7 +244,7 @@ TEST_CASE("Cl(0,6,2) identities 2-6 of conventions.md with concrete numbers", "[
     CHECK(dense::vee(dense::bar(s), dense::wedge(N, s)) == S<cl062>(two_ek));
 }
 
-TEST_CASE("Cl(0,6,2) identities 9-10 of conventions.md (co-adjoint action)", "[dense]") {
+TEST_CASE("Cl(0,6,2) identities 9-10 of the paper (co-adjoint action)", "[dense]") {
     const vec3 w{2, -3, 5}, v{7, 11, -13}, l{17, 19, 23}, p{-29, 31, 37}, d{41, 43, 47};
     const double m = 53;
     const auto s = screw<cl062>(w, v);

@@ -16,8 +16,7 @@
 #include <vector>
 
 #include <ctga/ctga.hpp>
-#include <ctga/mechanics/exp_log.hpp>
-#include <ctga/mechanics/motion.hpp>
+#include <ctga/mechanics/motor.hpp>
 
 #include "support/catch.hpp"
 #include "support/general_reference.hpp"
@@ -395,13 +394,13 @@ TEST_CASE("§3 renormalize: g g* = 1 restored to rounding, and no further than t
 
     // failures are reported, not returned as motors
     const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
-    CHECK(renormalize_checked(motor<double>{0, 0, 0, 0, 1, 2, 3, 4}).error == input_error::not_a_motor);
-    CHECK(renormalize_checked(motor<double>{1, 0, 0, nan, 0, 0, 0, 0}).error == input_error::non_finite);
-    CHECK(renormalize_checked(motor<double>{1, 0, 0, 0, 0, inf, 0, 0}).error == input_error::non_finite);
-    CHECK(renormalize_checked(motor<double>{1e-300, 0, 0, 0, 1e300, 0, 0, 0}).error == input_error::not_a_motor);
+    CHECK(renormalize_checked(motor<double>{0, 0, 0, 0, 1, 2, 3, 4}).error == error_code::not_a_motor);
+    CHECK(renormalize_checked(motor<double>{1, 0, 0, nan, 0, 0, 0, 0}).error == error_code::non_finite);
+    CHECK(renormalize_checked(motor<double>{1, 0, 0, 0, 0, inf, 0, 0}).error == error_code::non_finite);
+    CHECK(renormalize_checked(motor<double>{1e-300, 0, 0, 0, 1e300, 0, 0, 0}).error == error_code::not_a_motor);
     CHECK(renormalize_checked(motor<double>{1e-300, 1e-300, 0, 0, 0, 1e-300, 0, 0}));  // tiny but fine
     CHECK(renormalize_checked(motor<double>{1e300, 1e300, 0, 0, 0, 1e300, 0, 0}));     // huge but fine
-    CHECK(std::string(describe(input_error::not_a_motor)).find("not a rigid motion") != std::string::npos);
+    CHECK(std::string(describe(error_code::not_a_motor)).find("not a rigid motion") != std::string::npos);
 }
 
 // Rodrigues: the rotation matrix of angle θ about the unit axis u, independently of the rotor.
@@ -501,28 +500,28 @@ TEST_CASE("from_homogeneous rejects what is not a rigid motion, with the reason"
 
     homogeneous_matrix<double> reflection = ok;
     for (int j = 0; j < 3; ++j) reflection[2][j] = -reflection[2][j];  // det −1, still orthonormal
-    CHECK(from_homogeneous(reflection).error == input_error::not_a_rotation);
+    CHECK(from_homogeneous(reflection).error == error_code::not_a_rotation);
 
     homogeneous_matrix<double> sheared = ok;
     sheared[0][1] += 1e-6;
-    CHECK(from_homogeneous(sheared).error == input_error::not_a_rotation);
+    CHECK(from_homogeneous(sheared).error == error_code::not_a_rotation);
     homogeneous_matrix<double> stretched = ok;
     for (int i = 0; i < 3; ++i) stretched[i][0] *= 1.001;
-    CHECK(from_homogeneous(stretched).error == input_error::not_a_rotation);
+    CHECK(from_homogeneous(stretched).error == error_code::not_a_rotation);
 
     homogeneous_matrix<double> bottom = ok;
     bottom[3][0] = 0.5;
-    CHECK(from_homogeneous(bottom).error == input_error::not_homogeneous);
+    CHECK(from_homogeneous(bottom).error == error_code::not_homogeneous);
     bottom = ok;
     bottom[3][3] = 2;
-    CHECK(from_homogeneous(bottom).error == input_error::not_homogeneous);
+    CHECK(from_homogeneous(bottom).error == error_code::not_homogeneous);
 
     homogeneous_matrix<double> nan = ok;
     nan[1][2] = std::numeric_limits<double>::quiet_NaN();
-    CHECK(from_homogeneous(nan).error == input_error::non_finite);
+    CHECK(from_homogeneous(nan).error == error_code::non_finite);
     homogeneous_matrix<double> inf = ok;
     inf[0][3] = std::numeric_limits<double>::infinity();
-    CHECK(from_homogeneous(inf).error == input_error::non_finite);
+    CHECK(from_homogeneous(inf).error == error_code::non_finite);
 
     // the tolerance: 1e-12 off orthonormality passes (and is absorbed), 1e-8 does not
     homogeneous_matrix<double> close = ok;
@@ -534,7 +533,7 @@ TEST_CASE("from_homogeneous rejects what is not a rigid motion, with the reason"
     CHECK(matrix_rel(to_homogeneous(*near_ok), ok) <= 1e-12);
     homogeneous_matrix<double> far = ok;
     far[0][1] += 1e-8;
-    CHECK(from_homogeneous(far).error == input_error::not_a_rotation);
+    CHECK(from_homogeneous(far).error == error_code::not_a_rotation);
     CHECK(from_homogeneous(far, 1e-7));  // an explicit, looser tolerance
 
     // float: its own tolerance (1024 ε), round trip at float precision

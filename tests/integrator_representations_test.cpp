@@ -224,7 +224,7 @@ TEST_CASE("the conventions the dense and matrix models rest on", "[integrators][
         w.record("matrix M = mobility_matrix(mobility_of)", dm / sm, tight);
         w.record("matrix M N = 1", rel_eigen(M6 * N6, ct::matrix6<double>::Identity()), tight);
 
-        // H s = g s g*, H⁻ᵀ P = ḡ P ḡ* (transform.hpp), H H⁻¹ = 1
+        // H s = g s g*, H⁻ᵀ P = ḡ P ḡ* (motor.hpp), H H⁻¹ = 1
         const auto A = ct::matrix_model_detail::adjoint_of<double>(ct::matrix_of(g));
         w.record("H s = g s g*", rel(ct::to_ctga(ct::vector6<double>(A.H * ct::matrix_of(s))), screw<double>(adjoint(g, s))),
                  tight);

@@ -1,5 +1,5 @@
 // Numerical stability under stress, against the exact torque-free body
-// (support/freebody_exact.hpp) and the thresholds of /work/shared/reference/freebody.md:
+// (support/freebody_exact.hpp) and the thresholds written beside each test below:
 //   - the Dzhanibekov (intermediate-axis) body: the same number of flips as the exact solution on
 //     [0, 2000 s] for RK4 at h = 0.01, and the reference table's energy, |m| and m(T) errors at
 //     T = 10⁴ s met within 2×;

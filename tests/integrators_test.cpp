@@ -178,23 +178,23 @@ TEST_CASE("bad input and blow-ups are reported, never returned as a state", "[in
 
     SECTION("zero mass, NaN or infinite inertia: the body is refused") {
         const mat3<double> I{{{1, 0, 0}, {0, 2, 0}, {0, 0, 3}}};
-        CHECK(make_rigid_body(0.0, vec3<double>{}, I).error == input_error::non_positive_mass);
-        CHECK(make_rigid_body(nan, vec3<double>{}, I).error == input_error::non_finite);
-        CHECK(make_rigid_body(1.0, vec3<double>{inf, 0, 0}, I).error == input_error::non_finite);
+        CHECK(make_rigid_body(0.0, vec3<double>{}, I).error == error_code::non_positive_mass);
+        CHECK(make_rigid_body(nan, vec3<double>{}, I).error == error_code::non_finite);
+        CHECK(make_rigid_body(1.0, vec3<double>{inf, 0, 0}, I).error == error_code::non_finite);
         CHECK(make_rigid_body(1.0, vec3<double>{}, mat3<double>{{{nan, 0, 0}, {0, 2, 0}, {0, 0, 3}}}).error ==
-              input_error::non_finite);
+              error_code::non_finite);
     }
     SECTION("a non-finite initial state or step") {
         auto bad = x0;
         bad.s[4] = nan;
         const auto r1 = integrate(rk4{}, model, bad, 0.01, 10);
-        CHECK(r1.error == input_error::non_finite);
+        CHECK(r1.error == error_code::non_finite);
         CHECK(r1.steps == 0);
         bad = x0;
         bad.g[6] = inf;
-        CHECK(integrate(lie_rk4{}, model, bad, 0.01, 10).error == input_error::non_finite);
-        CHECK(integrate(rk4{}, model, x0, inf, 10).error == input_error::non_finite);
-        CHECK(integrate(rk4{}, model, x0, nan, 10).error == input_error::non_finite);
+        CHECK(integrate(lie_rk4{}, model, bad, 0.01, 10).error == error_code::non_finite);
+        CHECK(integrate(rk4{}, model, x0, inf, 10).error == error_code::non_finite);
+        CHECK(integrate(rk4{}, model, x0, nan, 10).error == error_code::non_finite);
     }
     SECTION("a wrench that turns NaN stops the run at the last good state") {
         struct failing_wrench {
@@ -207,14 +207,14 @@ TEST_CASE("bad input and blow-ups are reported, never returned as a state", "[in
         int calls = 0;
         const rigid_body_motion<double, frame::body, failing_wrench> forced{b, {&calls}};
         const auto run = integrate(rk4{}, forced, {x0.g, x0.s}, 0.01, 100);
-        CHECK(run.error == input_error::non_finite);
+        CHECK(run.error == error_code::non_finite);
         CHECK(run.steps == 2);  // 4 wrench calls per step: step 3 sees call 11
         CHECK(forced.finite(run.state.g, run.state.s));
     }
     SECTION("explicit Euler's blow-up at a large step is reported") {
         const state_of<decltype(model)> fast{x0.g, screw<double>{30, 60, -40, 0, 0, 0}};
         const auto run = integrate(explicit_euler{}, model, fast, 0.5, 100'000);
-        CHECK(run.error == input_error::non_finite);
+        CHECK(run.error == error_code::non_finite);
         CHECK(run.steps < 100'000);
         CHECK(model.finite(run.state.g, run.state.s));
         std::printf("explicit Euler, h|ω| = 40: non-finite after %lld steps, reported\n", run.steps);
@@ -222,7 +222,7 @@ TEST_CASE("bad input and blow-ups are reported, never returned as a state", "[in
     SECTION("the implicit midpoint refuses a step it cannot converge") {
         const state_of<decltype(model)> fast{x0.g, screw<double>{30, 60, -40, 0, 0, 0}};
         const auto run = integrate(implicit_midpoint{}, model, fast, 0.5, 10);
-        CHECK(run.error == input_error::did_not_converge);
+        CHECK(run.error == error_code::did_not_converge);
         CHECK(run.steps == 0);
         CHECK(std::string(describe(run.error)).find("did not converge") != std::string::npos);
     }

@@ -1,7 +1,7 @@
 // What the mechanics costs, in multiplications and additions of real numbers.
 //
 // The algebra's formulas are priced by the engine (cost_of, static_asserted against the counts
-// of reference/costs.md). The maps built once from a motor (motor_map) are plain structured
+// the hand-written 6D spatial algebra pays, docs/benchmarks.md). The maps built once from a motor (motor_map) are plain structured
 // arithmetic; their operations are counted by running them on a scalar type that counts
 // (`counted`, below), against the hand-written spatial-algebra figures: Pinocchio's 24m 18a for a
 // screw or co-screw transform and ≈ 38m 37a for an inertia transform, with a 2× allowance.
@@ -14,7 +14,8 @@
 
 namespace scalars {
 
-// A double that counts the arithmetic done on it. Negation is free (a sign flip), as in costs.md.
+// A double that counts the arithmetic done on it. Negation is free (a sign flip), as in every
+// operation count of this project.
 struct counted {
     double v = 0;
     static inline long mul = 0, add = 0, div = 0;
@@ -107,14 +108,14 @@ using N6 = rigid_inertia<double>;
 using Ng = inertia<double>;
 using M6 = mobility<double>;
 
-static_assert(cost_of<result<decltype(paper::bracket), screw<>, screw<>>> == expr::cost{18, 12});
-static_assert(cost_of<result<decltype(paper::coadjoint), s6, P6>> == expr::cost{18, 12});
-static_assert(cost_of<result<decltype(paper::evaluation), P6, s6>> == expr::cost{6, 5});
-static_assert(cost_of<result<decltype(paper::momentum), N6, s6>> == expr::cost{24, 18},
+static_assert(cost_of<result<decltype(bracket.formula), screw<>, screw<>>> == expr::cost{18, 12});
+static_assert(cost_of<result<decltype(coadjoint.formula), s6, P6>> == expr::cost{18, 12});
+static_assert(cost_of<result<decltype(evaluation.formula), P6, s6>> == expr::cost{6, 5});
+static_assert(cost_of<result<decltype(momentum.formula), N6, s6>> == expr::cost{24, 18},
               "a rigid body's inertia has 24 blades: the momentum at Pinocchio's 24m 18a");
-static_assert(cost_of<result<decltype(paper::momentum), Ng, s6>> == expr::cost{36, 30});
-static_assert(cost_of<result<decltype(paper::velocity), M6, P6>> == expr::cost{36, 30});
-static_assert(cost_of<result<decltype(paper::twice_kinetic_energy), N6, s6>>.mul <= 30);
+static_assert(cost_of<result<decltype(momentum.formula), Ng, s6>> == expr::cost{36, 30});
+static_assert(cost_of<result<decltype(velocity.formula), M6, P6>> == expr::cost{36, 30});
+static_assert(cost_of<result<decltype(kinetic_energy.formula), N6, s6>>.mul <= 30);
 static_assert(cost_of<decltype(std::declval<const motor<>&>() * std::declval<const motor<>&>())> == expr::cost{48, 40});
 
 template <class E>
@@ -124,17 +125,17 @@ void report(const char* name) {
 
 TEST_CASE("engine costs of the paper's formulas on the mechanics types", "[mechanics][cost]") {
     // the static_asserts above are the test; this records the figures for the docs
-    report<result<decltype(paper::bracket), screw<>, screw<>>>("bracket [s1, s2]");
-    report<result<decltype(paper::coadjoint), s6, P6>>("coadjoint {s, P}");
-    report<result<decltype(paper::evaluation), P6, s6>>("evaluation P(s)");
-    report<result<decltype(paper::momentum), N6, s6>>("momentum (rigid N)");
-    report<result<decltype(paper::momentum), Ng, s6>>("momentum (general N)");
-    report<result<decltype(paper::velocity), M6, P6>>("velocity E v (M ^ P)");
-    report<result<decltype(paper::twice_kinetic_energy), N6, s6>>("2 E_k (rigid N)");
-    report<result<decltype(paper::inertia_rate), N6, s6>>("dN/dt (rigid N)");
+    report<result<decltype(bracket.formula), screw<>, screw<>>>("bracket [s1, s2]");
+    report<result<decltype(coadjoint.formula), s6, P6>>("coadjoint {s, P}");
+    report<result<decltype(evaluation.formula), P6, s6>>("evaluation P(s)");
+    report<result<decltype(momentum.formula), N6, s6>>("momentum (rigid N)");
+    report<result<decltype(momentum.formula), Ng, s6>>("momentum (general N)");
+    report<result<decltype(velocity.formula), M6, P6>>("velocity E v (M ^ P)");
+    report<result<decltype(kinetic_energy.formula), N6, s6>>("2 E_k (rigid N)");
+    report<result<decltype(inertia_rate.formula), N6, s6>>("dN/dt (rigid N)");
     report<decltype(std::declval<const motor<>&>() * std::declval<const motor<>&>())>("motor product g1 g2");
     report<result<decltype(adjoint), motor<>, screw<>>>("adjoint g s g*");
-    CHECK(cost_of<result<decltype(paper::momentum), N6, s6>>.mul == 24);
+    CHECK(cost_of<result<decltype(momentum.formula), N6, s6>>.mul == 24);
 }
 
 }  // namespace

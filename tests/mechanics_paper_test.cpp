@@ -353,7 +353,7 @@ TEST_CASE("§5 E_k = ½ P ∨ (Q0 ∧ s) = ½ s̄ ∨ (N ∧ s), with A ∨ (Q0 
     for (int trial = 0; trial < 50; ++trial) {
         const rigid_inertia<> N = inertia_of(r.body());
         const auto s = eval(lift(r.twist()));
-        const coscrew<> P = paper::momentum(N, s);
+        const coscrew<> P = momentum.formula(N, s);
         const double via_evaluation = 0.5 * scalar_part(P & (Q0 ^ s));
         const double via_bar = 0.5 * scalar_part(bar(s) & (N ^ s));
         CHECK(via_bar == Approx(via_evaluation).epsilon(1e-13));
@@ -398,7 +398,7 @@ TEST_CASE("§6 (sN − Ns) ∧ s = 0 and ½ A ∨ ((s̄N − Ns̄) ∧ s) = {s, 
         const auto zero = eval(formula([](auto x, auto M) { return (x * M - M * x) ^ x; })(s, N));
         static_assert(decltype(zero)::size() == 0, "structurally zero: the engine proves it");
         const coscrew<> lhs = formula([](auto x, auto M) { return half * (A & ((bar(x) * M - M * bar(x)) ^ x)); })(s, N);
-        CHECK(max_diff(lhs, coscrew<>(paper::coadjoint(s, coscrew<>(paper::momentum(N, s))))) <= 1e-13);
+        CHECK(max_diff(lhs, coscrew<>(coadjoint.formula(s, coscrew<>(momentum.formula(N, s))))) <= 1e-13);
     }
 }
 
@@ -420,7 +420,7 @@ TEST_CASE("§6 dP/dt = A ∨ (N ∧ ṡ) + ½ A ∨ ((s̄N − Ns̄) ∧ s), and
         // fixed frame: the inertia moved by g
         const state_rate<> rate = fixed_frame_rates(body, g, s, W);
         const rigid_inertia<> N = transform(map_of(g), body.N);
-        const auto lhs = eval(paper::motion_lhs(N, s, rate.s_dot));
+        const auto lhs = eval(motion_lhs(N, s, rate.s_dot));
         const auto rhs = eval(W * E);
         // The terms summed are of size |N||ṡ|, and the moved N has entries m|t|² (up to ~700
         // here): rounding is relative to that, not to |W| ~ 1.

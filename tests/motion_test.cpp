@@ -5,7 +5,7 @@
 #include <random>
 
 #include <ctga/ctga.hpp>
-#include <ctga/mechanics/motion.hpp>
+#include <ctga/mechanics/motor.hpp>
 
 #include "support/catch.hpp"
 

@@ -36,14 +36,12 @@
 
 #include <Eigen/Dense>
 
-#include <ctga/mechanics/checked.hpp>
+#include <ctga/support/checked.hpp>
 #include <ctga/mechanics/convert.hpp>
 #include <ctga/mechanics/dynamics.hpp>
 #include <ctga/mechanics/inertia.hpp>
 #include <ctga/mechanics/linear3.hpp>
-#include <ctga/mechanics/motion.hpp>
-#include <ctga/mechanics/spatial.hpp>
-#include <ctga/mechanics/transform.hpp>
+#include <ctga/mechanics/motor.hpp>
 
 #include "support/catch.hpp"
 
@@ -164,12 +162,12 @@ double rel(Real x, Real y) { return static_cast<double>(std::abs(x - y) / std::m
 
 // ---- §6's equation of motion in the paper's own form ----------------------------------------
 
-// N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) (ctga::paper::motion_lhs) against the 6×6 value (N6 ṡ + {s, N6 s}) E:
+// N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) (ctga::motion_lhs) against the 6×6 value (N6 ṡ + {s, N6 s}) E:
 // every coefficient of the difference, over max(1, max|reference|). ṡ is any screw here (not
 // the solution, whose equation would cancel large Coriolis terms against W).
 double motion_lhs_error(const ctga::rigid_inertia<double>& N, const ctga::screw<double>& s,
                         const ctga::screw<double>& sdot, const V6& expected) {
-    const auto lhs = ctga::eval(ctga::paper::motion_lhs(N, s, sdot));
+    const auto lhs = ctga::eval(ctga::motion_lhs(N, s, sdot));
     const auto rhs = ctga::eval(ctga::coscrew_from_vector6(to_double(expected)) * ctga::invariants::E);
     const auto diff = ctga::eval(lhs - rhs);
     Real worst = 0;
@@ -342,7 +340,7 @@ TEST_CASE("the mechanics agree with the 6x6 formalism of §2 on 1,000 random cas
         // ---- ctga ----
         const auto mp_checked = ctga::make_mass_properties(c.mass, c.com, c.inertia_c);
         INFO("case " << k);
-        REQUIRE(mp_checked.error == ctga::input_error::none);
+        REQUIRE(mp_checked.error == ctga::error_code::none);
         const ctga::mass_properties<double>& mp = *mp_checked;
         const ctga::rigid_inertia<double> N = ctga::inertia_of(mp);
         const ctga::mobility<double> M = ctga::mobility_of(mp);
@@ -526,9 +524,9 @@ TEST_CASE("the mechanics agree with the 6x6 formalism of §2 on 1,000 random cas
                        bound::at_least, 1.0, k);
             // dP/dt = W with P = N(t) s(t): (N s)' = Ṅ s + N ṡ, and Ṅ s = {s, N s} (ad_s s = 0)
             record("reference: dN/dt s = {s, N s}", rel(Ndot_fixed * s, coadjoint_action(s, N6f * s)), c);
-            record("paper::motion_lhs(N, s, sdot) vs (N6 sdot + {s, N6 s}) E",
+            record("motion_lhs(N, s, sdot) vs (N6 sdot + {s, N6 s}) E",
                    motion_lhs_error(N, cs, cs2, N6 * s2 + coadjoint_action(s, N6 * s)), c);
-            record("paper::motion_lhs(H^-T N H^-1, s, sdot) vs (N sdot + {s, N s}) E",
+            record("motion_lhs(H^-T N H^-1, s, sdot) vs (N sdot + {s, N s}) E",
                    motion_lhs_error(Nf, cs, cs2, N6f * s2 + coadjoint_action(s, N6f * s)), c);
         }
     }
@@ -539,7 +537,7 @@ TEST_CASE("the mechanics agree with the 6x6 formalism of §2 on 1,000 random cas
 // ---- rejected inputs ------------------------------------------------------------------------
 
 TEST_CASE("make_mass_properties rejects what no rigid body has", "[mechanics][spatial][checked]") {
-    using ctga::input_error;
+    using ctga::error_code;
     const double nan = std::numeric_limits<double>::quiet_NaN();
     const double inf = std::numeric_limits<double>::infinity();
     const ctga::vec3<double> com{0.1, -0.2, 0.3};
@@ -554,49 +552,49 @@ TEST_CASE("make_mass_properties rejects what no rigid body has", "[mechanics][sp
         return out;
     };
     const ctga::mat3<double> good = tensor(1, 2, 2.5);
-    REQUIRE(ctga::make_mass_properties(2.0, com, good).error == input_error::none);
+    REQUIRE(ctga::make_mass_properties(2.0, com, good).error == error_code::none);
 
     SECTION("NaN or infinity in any input") {
         for (double bad : {nan, inf, -inf}) {
-            CHECK(ctga::make_mass_properties(bad, com, good).error == input_error::non_finite);
+            CHECK(ctga::make_mass_properties(bad, com, good).error == error_code::non_finite);
             for (std::size_t i = 0; i < 3; ++i) {
                 ctga::vec3<double> c = com;
                 c[i] = bad;
-                CHECK(ctga::make_mass_properties(2.0, c, good).error == input_error::non_finite);
+                CHECK(ctga::make_mass_properties(2.0, c, good).error == error_code::non_finite);
                 for (std::size_t j = 0; j < 3; ++j) {
                     ctga::mat3<double> I = good;
                     I[i][j] = bad;
-                    CHECK(ctga::make_mass_properties(2.0, com, I).error == input_error::non_finite);
+                    CHECK(ctga::make_mass_properties(2.0, com, I).error == error_code::non_finite);
                 }
             }
         }
     }
     SECTION("m <= 0") {
         for (double m : {0.0, -0.0, -1.0, -1e-300})
-            CHECK(ctga::make_mass_properties(m, com, good).error == input_error::non_positive_mass);
+            CHECK(ctga::make_mass_properties(m, com, good).error == error_code::non_positive_mass);
     }
     SECTION("a non-symmetric tensor") {
         ctga::mat3<double> I = good;
         I[0][1] += 1e-3;
-        CHECK(ctga::make_mass_properties(2.0, com, I).error == input_error::not_symmetric);
+        CHECK(ctga::make_mass_properties(2.0, com, I).error == error_code::not_symmetric);
         I = good;
         I[2][1] -= 0.5;
-        CHECK(ctga::make_mass_properties(2.0, com, I).error == input_error::not_symmetric);
+        CHECK(ctga::make_mass_properties(2.0, com, I).error == error_code::not_symmetric);
     }
     SECTION("a tensor that is not positive definite") {
-        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 1, 0)).error == input_error::not_positive_definite);
-        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 1, -0.5)).error == input_error::not_positive_definite);
-        CHECK(ctga::make_mass_properties(2.0, com, tensor(-1, 2, 2.5)).error == input_error::not_positive_definite);
-        CHECK(ctga::make_mass_properties(2.0, com, ctga::mat3<double>{}).error == input_error::not_positive_definite);
+        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 1, 0)).error == error_code::not_positive_definite);
+        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 1, -0.5)).error == error_code::not_positive_definite);
+        CHECK(ctga::make_mass_properties(2.0, com, tensor(-1, 2, 2.5)).error == error_code::not_positive_definite);
+        CHECK(ctga::make_mass_properties(2.0, com, ctga::mat3<double>{}).error == error_code::not_positive_definite);
     }
     SECTION("principal moments violating the triangle inequality") {
         const ctga::mat3<double> diag{{{1, 0, 0}, {0, 1, 0}, {0, 0, 3}}};
-        CHECK(ctga::make_mass_properties(2.0, com, diag).error == input_error::triangle_inequality);
-        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 1, 3)).error == input_error::triangle_inequality);
-        CHECK(ctga::make_mass_properties(2.0, com, tensor(3, 1, 1)).error == input_error::triangle_inequality);
-        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 2, 3.001)).error == input_error::triangle_inequality);
+        CHECK(ctga::make_mass_properties(2.0, com, diag).error == error_code::triangle_inequality);
+        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 1, 3)).error == error_code::triangle_inequality);
+        CHECK(ctga::make_mass_properties(2.0, com, tensor(3, 1, 1)).error == error_code::triangle_inequality);
+        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 2, 3.001)).error == error_code::triangle_inequality);
         // equality is a lamina, allowed
-        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 2, 3)).error == input_error::none);
+        CHECK(ctga::make_mass_properties(2.0, com, tensor(1, 2, 3)).error == error_code::none);
     }
 }
 

@@ -199,7 +199,7 @@ std_flags=$(grep -oE -- '-(O[0-9s]|std=[^ ]+|DNDEBUG)' <<<"$flags" | paste -sd' 
     failed=$(awk -F'\t' 'NR > 1 && $11 != "ok"' "$tsv")
     if [[ -n $failed ]]; then
         echo
-        budget=$(grep -oE 'term_budget = [0-9]+' "$root/include/ctga/expr/nodes.hpp" | grep -oE '[0-9]+$' || echo '?')
+        budget=$(grep -oE 'term_budget = [0-9]+' "$root/include/ctga/expr/staging.hpp" | grep -oE '[0-9]+$' || echo '?')
         echo "Limits: the rows marked *fails* do not compile (wall = time to the error). A product node may"
         echo "multiply out at most \`expr::term_budget\` = $budget blade pairs; a product of two multivectors"
         echo "(leaves) cannot stage anything below it, so past the budget it has no valid option and stops:"

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include <ctga/algebra/operations.hpp>
-#include <ctga/algebras.hpp>
+#include <ctga/core.hpp>
+#include <ctga/mechanics/algebras.hpp>
 
 using G = ctga::cl031;
 using motor = G::mv<double, "1", "e2e3", "e3e1", "e1e2", "ee1e2e3", "e1e", "e2e", "e3e">;

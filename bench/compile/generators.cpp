@@ -15,8 +15,8 @@
 #include <cstdlib>
 #include <utility>
 
-#include <ctga/algebra/operations.hpp>
-#include <ctga/algebra/signature.hpp>
+#include <ctga/core.hpp>
+#include <ctga/algebra/algebra.hpp>
 
 #ifndef CTGA_N
 #define CTGA_N 4

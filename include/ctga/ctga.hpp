@@ -1,34 +1,32 @@
 // ctga: compile-time Clifford algebra for rigid-body dynamics
 // (J. M. Selig, E. Bayro-Corrochano, "Rigid Body Dynamics Using Clifford Algebra", 2010).
-// The umbrella header: the whole library.
+// The umbrella header: every public header of the library.
+//
+//   support/      inline.hpp, math.hpp, checked.hpp           no dependencies
+//   algebra/      blades, layouts, the algebra type, rules, multivector storage
+//   expr/         the expression engine: normal forms, staging, programs, running them
+//   operations/   the user-facing operations: operators, evaluation, formulas, printing
+//   mechanics/    the paper: algebras, screw, coscrew, motor, inertia, dynamics, convert
+//   integrators/  methods stepping any motion model
+//   scenes/       body kinds, scenes of many bodies, batches
 #pragma once
 
-#include "ctga/algebra/blade.hpp"
-#include "ctga/algebra/fixed_string.hpp"
-#include "ctga/algebra/io.hpp"
-#include "ctga/algebra/layout.hpp"
-#include "ctga/algebra/multivector.hpp"
-#include "ctga/algebra/operations.hpp"
-#include "ctga/algebra/products.hpp"
-#include "ctga/algebra/signature.hpp"
-#include "ctga/algebras.hpp"
-#include "ctga/expr/expression.hpp"
-#include "ctga/expr/nodes.hpp"
-#include "ctga/expr/normal_form.hpp"
-#include "ctga/expr/program.hpp"
-#include "ctga/expr/rational.hpp"
-#include "ctga/mechanics/motion.hpp"
-#include "ctga/mechanics/body_inertia.hpp"
-#include "ctga/mechanics/checked.hpp"
-#include "ctga/mechanics/convert.hpp"
-#include "ctga/mechanics/dynamics.hpp"
-#include "ctga/mechanics/inertia.hpp"
-#include "ctga/mechanics/linear3.hpp"
-#include "ctga/mechanics/spatial.hpp"
-#include "ctga/mechanics/transform.hpp"
-#include "ctga/mechanics/exp_log.hpp"
+#include "ctga/core.hpp"
 #include "ctga/integrators/integrate.hpp"
 #include "ctga/integrators/methods.hpp"
 #include "ctga/integrators/model.hpp"
+#include "ctga/mechanics/algebras.hpp"
+#include "ctga/mechanics/convert.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/deprecated.hpp"
+#include "ctga/mechanics/dynamics.hpp"
+#include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/scenes/batch.hpp"
 #include "ctga/scenes/body_kinds.hpp"
 #include "ctga/scenes/scene.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/inline.hpp"
+#include "ctga/support/math.hpp"

@@ -12,7 +12,7 @@
 //     exactly, so P(t) = P(0) + t W (the wrench functor converts W to the body frame for the
 //     body-frame model);
 //   - NaN inputs (an initial velocity, the step size, the mass) are reported as
-//     input_error::non_finite.
+//     error_code::non_finite.
 // Exit status 0 when every check passes, 1 otherwise. `ctga_embedded --allocate` performs one
 // allocation on purpose, to show that the replacement operator new is in effect (it aborts).
 #include <cstddef>
@@ -214,11 +214,11 @@ int main(int argc, char** argv) {
     const F nan = std::numeric_limits<F>::quiet_NaN();
     const rigid_body_motion<F, frame::body> model{b};
     const auto nan_velocity = integrate(rk4{}, model, {g0, screw<F>{F(0.3), nan, F(0), F(0), F(0), F(0)}}, h, steps);
-    check(nan_velocity.error == input_error::non_finite && nan_velocity.steps == 0, "NaN velocity reported");
+    check(nan_velocity.error == error_code::non_finite && nan_velocity.steps == 0, "NaN velocity reported");
     const auto nan_step = integrate(lie_rk4{}, model, {g0, s_body0}, nan, steps);
-    check(nan_step.error == input_error::non_finite && nan_step.steps == 0, "NaN step size reported");
+    check(nan_step.error == error_code::non_finite && nan_step.steps == 0, "NaN step size reported");
     const auto nan_mass = make_rigid_body(nan, vec3<F>{}, mat3<F>{{{F(1), F(0), F(0)}, {F(0), F(2), F(0)}, {F(0), F(0), F(3)}}});
-    check(nan_mass.error == input_error::non_finite, "NaN mass reported");
+    check(nan_mass.error == error_code::non_finite, "NaN mass reported");
     std::printf("NaN velocity: %s; NaN step: %s; NaN mass: %s\n", describe(nan_velocity.error),
                 describe(nan_step.error), describe(nan_mass.error));
 

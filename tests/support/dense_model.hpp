@@ -51,7 +51,7 @@
 #include <limits>
 #include <string_view>
 
-#include <ctga/algebras.hpp>
+#include <ctga/mechanics/algebras.hpp>
 #include <ctga/integrators/model.hpp>
 #include <ctga/mechanics/inertia.hpp>
 #include <ctga/reference/dense.hpp>

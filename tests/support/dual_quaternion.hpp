@@ -9,7 +9,7 @@
 #include <cstddef>
 #include <limits>
 
-#include <ctga/mechanics/exp_log.hpp>
+#include <ctga/mechanics/motor.hpp>
 
 namespace ctga::test::dual_quaternion {
 
@@ -22,7 +22,7 @@ std::array<T, 8> exp(const std::array<T, 6>& z) {
     const T bx = z[3] / T(2), by = z[4] / T(2), bz = z[5] / T(2);
     const T phi2 = ax * ax + ay * ay + az * az;
     const T phi = sqrt(phi2);
-    const auto [sinc, c] = ctga::motion_detail::sinc_and_c(phi, phi2);
+    const auto [sinc, c] = ctga::motor_detail::sinc_and_c(phi, phi2);
     const T ab = ax * bx + ay * by + az * bz;
     const T cab = c * ab;
     return {cos(phi), sinc * ax, sinc * ay, sinc * az, -sinc * ab, sinc * bx + cab * ax, sinc * by + cab * ay,

@@ -13,7 +13,7 @@
 // Near the separatrix all elliptic quantities are computed from k'² = 1 − k², which is formed
 // without cancellation beyond the distance G² − 2E·I_mid itself (see jacobi_kp).
 //
-// Sources: /work/shared/reference/freebody.md; Landau & Lifshitz, Mechanics §37 (Jacobi solution
+// Sources: Landau & Lifshitz, Mechanics §37 (Jacobi solution
 // and the Euler-angle attitude); DLMF 19.25.5/19.25.14 (Legendre integrals as Carlson R_F, R_J);
 // DLMF 22.4 (half-period shifts of sn, cn, dn). Signs are not trusted from the sources: the tests
 // check everything against an RK4 integration in long double.
@@ -253,7 +253,7 @@ struct torque_free_body {
         if (Dmid < 0) {
             kind_ = regime::major_axis_family;
         } else {
-            // freebody.md: relabel with the proper rotation (w0, w1, w2) → (w2, −w1, w0), inertias
+            // Relabel with the proper rotation (w0, w1, w2) → (w2, −w1, w0), inertias
             // (J2, J1, J0); the same formulas then hold with λ = sign(J2' − J1')·√… < 0.
             kind_ = regime::minor_axis_family;
             p = {p[2], p[1], p[0]};
@@ -265,7 +265,7 @@ struct torque_free_body {
         s_ = s;
         J_ = J;
 
-        // freebody.md / Landau §37 (their B1, B2, B3 are B0, B1, B2 here), with D_a = 2E·J_a − G²
+        // Landau §37 (their B1, B2, B3 are B0, B1, B2 here), with D_a = 2E·J_a − G²
         // (signs valid in both families):
         //   B0² = J0·D2/(J2 − J0), B1² = J1·D2/(J2 − J1), B2² = J2·(−D0)/(J2 − J0),
         //   λ = sign(J2 − J1)·√((J2 − J1)(−D0)/(J0 J1 J2)),
@@ -396,7 +396,7 @@ private:
         return m;
     }
     // Π(n, am u, k), continuous in u: with u = r + 2Kj, am u = am r + jπ and
-    // Π(n, φ + jπ) = Π(n, φ) + 2j Π(n) (freebody.md); for |r| ≤ K (DLMF 19.25.14 scaled by sin²φ)
+    // Π(n, φ + jπ) = Π(n, φ) + 2j Π(n) (DLMF 19.7.9 with 19.2.8); for |r| ≤ K (DLMF 19.25.14 scaled by sin²φ)
     //   Π(n, am r) = sn·R_F(cn², dn², 1) + (n/3) sn³ R_J(cn², dn², 1, 1 − n sn²),
     // evaluated from sn, cn, dn directly (no loss of cos φ near φ = ±π/2).
     T unwrapped_Pi(const jacobi_reduced<T>& jr) const {

@@ -38,8 +38,7 @@
 
 #include <ctga/integrators/model.hpp>
 #include <ctga/mechanics/inertia.hpp>
-#include <ctga/mechanics/motion.hpp>
-#include <ctga/mechanics/spatial.hpp>
+#include <ctga/mechanics/motor.hpp>
 
 namespace ctga::test {
 

@@ -1,6 +1,6 @@
 // Basis blades as bitmasks. Bit i set means generator i (in the algebra's declared order)
 // is a factor; the canonical orientation of a blade is its generators in ascending order.
-// These rules are metric-free; the metric (generator squares) enters only in products.hpp.
+// These rules are metric-free; the metric (generator squares) enters only in rules.hpp.
 #pragma once
 
 #include <bit>
@@ -27,6 +27,15 @@ struct signed_blade {
     for (; b != 0; b &= b - 1) swaps += std::popcount(a & ~((b & (0u - b)) * 2u - 1u));
     return (swaps & 1) ? -1 : 1;
 }
+
+// Outcome of reading a blade name such as "e3e1" or "a1a2a3a" (algebra::parse_blade).
+enum class blade_name_status { ok, unknown_generator, repeated_generator };
+
+struct parsed_blade {
+    blade_name_status status = blade_name_status::ok;
+    blade_mask mask = 0;
+    int sign = 1;  // the written order's orientation relative to the canonical one
+};
 
 // Signs of the grade-dependent involutions of a grade-k blade.
 [[nodiscard]] constexpr int reverse_sign(int k) noexcept { return ((k * (k - 1) / 2) & 1) ? -1 : 1; }

@@ -1,6 +1,12 @@
 // multivector<Alg, T, Layout>: the coefficients of exactly the blades of Layout, nothing else.
 // The blade set is part of the type, so every expression's result type, and the code that
-// computes it, are worked out by the compiler (expr/).
+// computes it, can be worked out by the compiler.
+//
+// This header knows nothing of how values are computed. A multivector is filled from another
+// blade set by copying (signs adjusted), or from any *component source*: a value that names its
+// algebra, the blades it can make non-zero (`layout`) and, for a target layout, produces the
+// target's components (`evaluate<T, Layout>()`). The expression engine's lazy expressions are
+// component sources; so is anything else that keeps that contract.
 #pragma once
 
 #include <array>
@@ -9,13 +15,12 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/algebra/blade.hpp"
+#include "ctga/algebra/fixed_string.hpp"
 #include "ctga/algebra/layout.hpp"
-#include "ctga/algebra/signature.hpp"
+#include "ctga/support/inline.hpp"
 
 namespace ctga {
-
-template <class Alg, class T, class Node, class Leaves>
-class expression;  // expr/expression.hpp
 
 namespace detail {
 
@@ -90,6 +95,19 @@ struct from_components_t {};
 }  // namespace detail
 
 template <class Alg, class T, auto Layout>
+class multivector;
+
+// A value that can produce the components of any layout of algebra Alg's blades in scalar type
+// T (void: an exact constant, any T), and names the blades it can make non-zero.
+template <class S, class Alg, class T, auto Layout>
+concept component_source = requires(const S& s) {
+    requires std::is_same_v<typename S::algebra_type, Alg>;
+    typename S::scalar_type;
+    S::layout.size();
+    { s.template evaluate<T, Layout>() } -> std::same_as<std::array<T, Layout.size()>>;
+};
+
+template <class Alg, class T, auto Layout>
 class multivector {
 public:
     using algebra_type = Alg;
@@ -112,16 +130,34 @@ public:
 
     constexpr multivector(detail::from_components_t, const std::array<T, size()>& c) noexcept : c_(c) {}
 
-    // From another blade set of the same algebra: every blade the source can make non-zero must
-    // be in this type (a compile error names the first one that is not); ctga::project drops.
-    // (A template is never the copy constructor, so same-layout copies stay trivial.)
+    // From another blade set of the same algebra: every blade of the source must be in this type
+    // (a compile error names the first one that is not; ctga::project drops blades on purpose).
+    // A copy, with the sign flipped where the two types orient a blade differently. (A template
+    // is never the copy constructor, so same-layout copies stay trivial.)
     template <auto L2>
-    constexpr multivector(const multivector<Alg, T, L2>& x) noexcept;
+    constexpr multivector(const multivector<Alg, T, L2>& x) noexcept {
+        constexpr int missing = detail::first_missing<L2, Layout>();
+        if constexpr (missing >= 0) {
+            (void)sizeof(detail::target_lacks<Alg, L2.masks[missing]>);
+        } else {
+            for (std::size_t i = 0; i < L2.size(); ++i) {
+                const int k = Layout.index_of(L2.masks[i]);
+                c_[static_cast<std::size_t>(k)] = L2.signs[i] * Layout.signs[k] > 0 ? x[i] : T(-x[i]);
+            }
+        }
+    }
 
-    // Evaluate an expression into this type: the same rule, and only this type's components
-    // are computed (operations.hpp).
-    template <class T2, class Node, class Leaves>
-    constexpr multivector(const expression<Alg, T2, Node, Leaves>& e) noexcept;
+    // From a component source (a lazy expression): the same rule, every blade the source can make
+    // non-zero must be in this type, and only this type's components are computed.
+    template <class S>
+        requires(!std::is_same_v<S, multivector> && component_source<S, Alg, T, Layout>)
+    CTGA_ALWAYS_INLINE constexpr multivector(const S& source) noexcept {
+        static_assert(std::is_void_v<typename S::scalar_type> || std::is_same_v<T, typename S::scalar_type>,
+                      "ctga: the expression's scalar type differs from the multivector's");
+        constexpr int missing = detail::first_missing<S::layout, Layout>();
+        if constexpr (missing >= 0) (void)sizeof(detail::target_lacks<Alg, S::layout.masks[missing]>);
+        else c_ = source.template evaluate<T, Layout>();
+    }
 
     [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return c_[i]; }
     [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return c_[i]; }
@@ -165,5 +201,21 @@ template <fixed_string Name, class Alg, class T, auto L>
 [[nodiscard]] constexpr T get(const multivector<Alg, T, L>& x) noexcept {
     return x.template get<Name>();
 }
+
+// One basis blade with coefficient exactly 1 (orientation as written): algebra::basis<"a1a2a3a">,
+// the paper's A. It holds no number; operations take it as an exact constant, so a product with
+// it costs no multiplication.
+template <class Alg, fixed_string Name>
+struct basis_blade {
+    using algebra_type = Alg;
+    using scalar_type = void;  // exact: takes the scalar type of what it meets
+    using blade = detail::blade_of<Alg, Name>;
+    static constexpr ctga::layout<1> layout{{blade::mask}, {static_cast<signed char>(blade::sign)}};
+};
+
+template <class X>
+inline constexpr bool is_basis_blade_v = false;
+template <class Alg, fixed_string Name>
+inline constexpr bool is_basis_blade_v<basis_blade<Alg, Name>> = true;
 
 }  // namespace ctga

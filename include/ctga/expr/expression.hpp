@@ -26,10 +26,12 @@
 #include <boost/hana/unpack.hpp>
 
 #include "ctga/algebra/multivector.hpp"
-#include "ctga/algebra/products.hpp"
 #include "ctga/expr/nodes.hpp"
 #include "ctga/expr/program.hpp"
 #include "ctga/expr/rational.hpp"
+#include "ctga/expr/run.hpp"
+#include "ctga/expr/staging.hpp"
+#include "ctga/support/inline.hpp"
 
 namespace ctga {
 
@@ -141,9 +143,12 @@ inline constexpr bool is_expression_v<expression<Alg, T, N, L>> = true;
 template <class X>
 concept expression_type = is_expression_v<std::remove_cvref_t<X>>;
 
+template <class X>
+concept basis_blade_type = is_basis_blade_v<std::remove_cvref_t<X>>;
+
 // Anything an operator takes as a multivector operand.
 template <class X>
-concept operand = multivector_type<X> || expression_type<X>;
+concept operand = multivector_type<X> || expression_type<X> || basis_blade_type<X>;
 
 // An exact rational constant: q<1, 2> is the paper's ½.
 template <std::int64_t N, std::int64_t D = 1>
@@ -164,12 +169,16 @@ constexpr auto make_expression(Leaves leaves) {
     return expression<Alg, T, Node, Leaves>{std::move(leaves)};
 }
 
-// An operand as an expression: multivectors become one-leaf expressions.
+// An operand as an expression: multivectors become one-leaf expressions, a basis blade an exact
+// constant.
 template <class X>
 constexpr auto as_expression(X&& x) noexcept {
     using D = std::remove_cvref_t<X>;
     if constexpr (expression_type<D>) {
         return D(std::forward<X>(x));
+    } else if constexpr (basis_blade_type<D>) {
+        return make_expression<typename D::algebra_type, void, constant<D::layout, std::array<rational, 1>{{{1, 1}}}>>(
+            boost::hana::make_tuple());
     } else if constexpr (std::is_lvalue_reference_v<X>) {
         return make_expression<typename D::algebra_type, typename D::scalar_type, leaf<0, D::layout>>(
             boost::hana::make_tuple(ref_leaf<D>{&x}));
@@ -245,15 +254,5 @@ constexpr auto scalar_expression(const T& value) noexcept {
 }
 
 }  // namespace expr
-
-namespace detail {
-template <class Alg, fixed_string Name>
-struct basis_constant {
-    using b = blade_of<Alg, Name>;
-    static constexpr layout<1> one{{b::mask}, {static_cast<signed char>(b::sign)}};
-    static constexpr auto value = expr::make_expression<Alg, void, expr::constant<one, std::array<expr::rational, 1>{{{1, 1}}}>>(
-        boost::hana::make_tuple());
-};
-}  // namespace detail
 
 }  // namespace ctga

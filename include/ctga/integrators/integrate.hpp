@@ -19,9 +19,9 @@ template <class State>
 struct run_result {
     State state;         // after `steps` good steps
     long long steps{};   // steps completed
-    input_error error = input_error::none;
+    error_code error = error_code::none;
 
-    [[nodiscard]] constexpr explicit operator bool() const noexcept { return error == input_error::none; }
+    [[nodiscard]] constexpr explicit operator bool() const noexcept { return error == error_code::none; }
 };
 
 struct ignore_steps {
@@ -34,15 +34,15 @@ template <class Method, motion_model M, class Observer = ignore_steps>
 [[nodiscard]] constexpr run_result<state_of<M>> integrate(const Method& method, const M& model, state_of<M> x,
                                                           const typename M::scalar_type& h, long long steps,
                                                           Observer&& observe = {}) {
-    if (!is_finite(h) || !model.finite(x.g, x.s)) return {x, 0, input_error::non_finite};
+    if (!is_finite(h) || !model.finite(x.g, x.s)) return {x, 0, error_code::non_finite};
     for (long long n = 0; n < steps; ++n) {
         const checked<state_of<M>> next = method.step(model, x, h);
         if (!next) return {x, n, next.error};
-        if (!model.finite(next.value.g, next.value.s)) return {x, n, input_error::non_finite};
+        if (!model.finite(next.value.g, next.value.s)) return {x, n, error_code::non_finite};
         x = next.value;
         observe(n + 1, x);
     }
-    return {x, steps, input_error::none};
+    return {x, steps, error_code::none};
 }
 
 }  // namespace ctga

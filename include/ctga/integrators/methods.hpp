@@ -13,7 +13,7 @@
 //                       and the Casimirs |p|² and l·p of the body momentum
 //
 // Each step returns checked<state>: an implicit step whose iteration does not converge reports
-// input_error::did_not_converge instead of returning an unconverged state.
+// error_code::did_not_converge instead of returning an unconverged state.
 #pragma once
 
 #include <limits>
@@ -64,7 +64,7 @@ struct explicit_euler {
                                                       const typename M::scalar_type& h) const {
         state_of<M> y = integrator_detail::shifted<M>(x, h, integrator_detail::rates(model, x));
         if (renormalize) y.g = model.renormalize(y.g);
-        return {y, input_error::none};
+        return {y, error_code::none};
     }
 };
 
@@ -87,7 +87,7 @@ struct rk4 {
         state_of<M> y{motor_t(x.g + w * (k1.g + T(2) * (k2.g + k3.g) + k4.g)),
                       screw_t(x.s + w * (k1.s + T(2) * (k2.s + k3.s) + k4.s))};
         if (renormalize) y.g = model.renormalize(y.g);
-        return {y, input_error::none};
+        return {y, error_code::none};
     }
 };
 
@@ -124,7 +124,7 @@ struct lie_rk4 {
         const screw_t theta(w * (K1 + T(2) * (K2 + K3) + K4));
         state_of<M> y{advance_pose(model, x.g, theta), screw_t(x.s + w * (L1 + T(2) * (L2 + L3) + L4))};
         if (renormalize) y.g = model.renormalize(y.g);
-        return {y, input_error::none};
+        return {y, error_code::none};
     }
 };
 
@@ -161,11 +161,11 @@ struct implicit_midpoint {
                 const screw_t s_mid(T(1) / T(2) * (x.s + s1));
                 state_of<M> y{midpoint_pose(s_mid, T(1)), s1};
                 if (renormalize) y.g = model.renormalize(y.g);
-                return {y, input_error::none};
+                return {y, error_code::none};
             }
             previous = change;
         }
-        return {x, input_error::did_not_converge};
+        return {x, error_code::did_not_converge};
     }
 };
 

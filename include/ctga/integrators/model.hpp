@@ -21,10 +21,9 @@
 
 #include <concepts>
 
-#include "ctga/mechanics/checked.hpp"
+#include "ctga/support/checked.hpp"
 #include "ctga/mechanics/dynamics.hpp"
-#include "ctga/mechanics/exp_log.hpp"
-#include "ctga/mechanics/motion.hpp"
+#include "ctga/mechanics/motor.hpp"
 
 namespace ctga {
 

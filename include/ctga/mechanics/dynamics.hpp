@@ -14,32 +14,21 @@
 // velocity s_b = g* s g.
 #pragma once
 
+#include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/inertia.hpp"
-#include "ctga/mechanics/spatial.hpp"
-#include "ctga/mechanics/transform.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/operations/formula.hpp"
+#include "ctga/support/inline.hpp"
 
 namespace ctga {
 
-// A rigid body's inertia in its own frame, with what the dynamics needs precomputed once.
-template <class T = double>
-struct rigid_body {
-    mass_properties<T> mass;  // in the body frame
-    rigid_inertia<T> N;       // inertia_of(mass)
-    mobility<T> M;            // mobility_of(mass) = N⁻¹
-};
-
-template <class T>
-[[nodiscard]] constexpr rigid_body<T> make_rigid_body(const mass_properties<T>& b) noexcept {
-    return {b, inertia_of(b), mobility_of(b)};
-}
-// Checked all the way from the raw numbers.
-template <class T>
-[[nodiscard]] constexpr checked<rigid_body<T>> make_rigid_body(const T& mass, const vec3<T>& com,
-                                                               const mat3<T>& inertia_c) noexcept {
-    const auto b = make_mass_properties(mass, com, inertia_c);
-    if (!b) return {{}, b.error};
-    return {make_rigid_body(*b), input_error::none};
-}
+// §6: the left-hand side of N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, as a formula (N in one frame with
+// s and ṡ); the tests check it against W E for the ṡ that acceleration() returns.
+inline constexpr auto motion_lhs = formula([](auto N, auto s, auto sdot) {
+    const auto x = lift(s);
+    return (N ^ lift(sdot)) + half * ((bar(x) * N - N * bar(x)) ^ x);
+});
 
 // ṡ from N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, all four quantities in one frame.
 template <class T, auto LN>

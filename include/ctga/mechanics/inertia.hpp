@@ -1,9 +1,19 @@
-// A rigid body's inertia (§5): from its mass properties to the element N of Cl(0,6,2) that maps
-// velocities to momenta, P = A ∨ (N ∧ s), and to the mobility M = N⁻¹, s = E ∨ (M ∧ P).
+// Inertias (paper §2, §5): every representation of a rigid body's (or a general) inertia, the
+// operations that use one (momentum, kinetic energy, dN/dt, the velocity a mobility gives) and
+// how each moves with the body. Which to use when is tabled in docs/design.md.
 //
-//   mass properties (m, c, I_c): mass, centre of mass, inertia tensor about c (frame axes)
-//   N = [[I_c − m Ĉ², m Ĉ], [−m Ĉ, m 1]]                                    (§2, C = Ĉ)
+//   mass_properties  (m, c, I_c): mass, centre of mass, inertia tensor about it; checked input
+//   body_inertia     N by its ten parameters (m, h = m c, I_o): the cheapest N in formulas
+//   rigid_inertia    N as the 24 blades that are not structurally zero for a rigid body
+//   inertia          N as all 36 blades: a general symmetric 6×6 inertia
+//   mobility         M = N⁻¹ as 36 blades: velocity from momentum, s = E ∨ (M ∧ P)
+//   rigid_body       mass properties with N and M precomputed, for the equations of motion
+//
+//   N = [[I_c − m Ĉ², m Ĉ], [−m Ĉ, m 1]] = [[I_o, Ĥ], [−Ĥ, m 1]]          (§2, C = Ĉ, h = m c)
 //   M = N⁻¹ = [[J, −J Ĉ], [Ĉ J, 1/m − Ĉ J Ĉ]],  J = I_c⁻¹
+//
+// Entry (i, j) of the 6×6 matrix is the coefficient of one blade (detail/matrix_blades.hpp), so
+// §5's diagonal inertia is N = dx a1ae1e + … + m a2a3e2e3 + …, entry by entry the matrix of §2.
 //
 // Physical validity is checked where the numbers come in (make_mass_properties): finite values,
 // m > 0, I_c symmetric positive definite, and principal moments obeying the triangle inequalities
@@ -13,13 +23,31 @@
 
 #include <cassert>
 #include <limits>
+#include <tuple>
 
-#include "ctga/mechanics/checked.hpp"
-#include "ctga/mechanics/convert.hpp"
+#include "ctga/mechanics/algebras.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/detail/matrix_blades.hpp"
 #include "ctga/mechanics/linear3.hpp"
-#include "ctga/mechanics/spatial.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/operations/formula.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/inline.hpp"
 
 namespace ctga {
+
+// ---- the representations ----------------------------------------------------------------------
+
+// A general symmetric inertia: component 6i + j is the entry N(i, j) of the 6×6 matrix of §2.
+template <class T = double>
+using inertia = multivector<cl062, T, matrix_blades::inertia_layout>;
+// A rigid body's inertia: the 24 blades that are not structurally zero, in row-major order.
+template <class T = double>
+using rigid_inertia = multivector<cl062, T, matrix_blades::rigid_inertia_layout>;
+// The inverse inertia as an element: component 6i + j is the entry M(i, j) of M = N⁻¹.
+template <class T = double>
+using mobility = multivector<cl062, T, matrix_blades::mobility_layout>;
 
 template <class T = double>
 struct mass_properties {
@@ -43,20 +71,20 @@ constexpr T tolerance(const mat3<T>& I) noexcept {
 }
 
 template <class T>
-constexpr input_error check(const T& m, const vec3<T>& c, const mat3<T>& I) noexcept {
+constexpr error_code check(const T& m, const vec3<T>& c, const mat3<T>& I) noexcept {
     for (const auto& row : I)
-        if (!all_finite(row[0], row[1], row[2])) return input_error::non_finite;
-    if (!all_finite(m, c[0], c[1], c[2])) return input_error::non_finite;
-    if (!(m > T(0))) return input_error::non_positive_mass;
+        if (!all_finite(row[0], row[1], row[2])) return error_code::non_finite;
+    if (!all_finite(m, c[0], c[1], c[2])) return error_code::non_finite;
+    if (!(m > T(0))) return error_code::non_positive_mass;
     const T tol = tolerance(I);
     for (int i = 0; i < 3; ++i)
         for (int j = i + 1; j < 3; ++j)
-            if (abs(I[i][j] - I[j][i]) > tol) return input_error::not_symmetric;
+            if (abs(I[i][j] - I[j][i]) > tol) return error_code::not_symmetric;
     // positive definite: the leading principal minors are positive (Sylvester)
     const T m1 = I[0][0], m2 = I[0][0] * I[1][1] - I[0][1] * I[0][1];
     const T m3 = I[0][0] * (I[1][1] * I[2][2] - I[1][2] * I[1][2]) - I[0][1] * (I[0][1] * I[2][2] - I[1][2] * I[0][2]) +
                  I[0][2] * (I[0][1] * I[1][2] - I[1][1] * I[0][2]);
-    if (!(m1 > T(0) && m2 > T(0) && m3 > T(0))) return input_error::not_positive_definite;
+    if (!(m1 > T(0) && m2 > T(0) && m3 > T(0))) return error_code::not_positive_definite;
     // triangle inequalities: Σ = ½ tr(I)·1 − I positive semi-definite, i.e. every principal minor ≥ 0
     const T half_trace = (I[0][0] + I[1][1] + I[2][2]) / T(2);
     mat3<T> S{};
@@ -64,14 +92,14 @@ constexpr input_error check(const T& m, const vec3<T>& c, const mat3<T>& I) noex
         for (int j = 0; j < 3; ++j) S[i][j] = (i == j ? half_trace : T(0)) - I[i][j];
     const T t2 = tol * half_trace, t3 = t2 * half_trace;
     for (int i = 0; i < 3; ++i)
-        if (S[i][i] < -tol) return input_error::triangle_inequality;
+        if (S[i][i] < -tol) return error_code::triangle_inequality;
     for (int i = 0; i < 3; ++i)
         for (int j = i + 1; j < 3; ++j)
-            if (S[i][i] * S[j][j] - S[i][j] * S[i][j] < -t2) return input_error::triangle_inequality;
+            if (S[i][i] * S[j][j] - S[i][j] * S[i][j] < -t2) return error_code::triangle_inequality;
     const T det_s = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[1][2]) - S[0][1] * (S[0][1] * S[2][2] - S[1][2] * S[0][2]) +
                     S[0][2] * (S[0][1] * S[1][2] - S[1][1] * S[0][2]);
-    if (det_s < -t3) return input_error::triangle_inequality;
-    return input_error::none;
+    if (det_s < -t3) return error_code::triangle_inequality;
+    return error_code::none;
 }
 
 }  // namespace inertia_detail
@@ -80,13 +108,13 @@ constexpr input_error check(const T& m, const vec3<T>& c, const mat3<T>& I) noex
 template <class T>
 [[nodiscard]] constexpr checked<mass_properties<T>> make_mass_properties(const T& mass, const vec3<T>& com,
                                                                          const mat3<T>& inertia_c) noexcept {
-    const input_error e = inertia_detail::check(mass, com, inertia_c);
-    if (e != input_error::none) return {{}, e};
+    const error_code e = inertia_detail::check(mass, com, inertia_c);
+    if (e != error_code::none) return {{}, e};
     mass_properties<T> out{mass, com, inertia_c};
     // symmetrise what the check accepted as symmetric to rounding
     for (int i = 0; i < 3; ++i)
         for (int j = i + 1; j < 3; ++j) out.inertia_c[i][j] = out.inertia_c[j][i] = (inertia_c[i][j] + inertia_c[j][i]) / T(2);
-    return {out, input_error::none};
+    return {out, error_code::none};
 }
 
 // §5's principal-axes body: mass m, principal moments (dx, dy, dz) about the centre of mass at the
@@ -96,6 +124,30 @@ template <class T>
                                                                                    const T& dz) noexcept {
     return make_mass_properties(m, vec3<T>{}, mat3<T>{{{dx, T(0), T(0)}, {T(0), dy, T(0)}, {T(0), T(0), dz}}});
 }
+
+// ---- the 6×6 matrix of §2 -------------------------------------------------------------------
+
+// 6×6 matrices. The 12 structurally zero entries of a rigid_inertia come out as zeros.
+template <class T, auto L>
+[[nodiscard]] constexpr mat6<T> inertia_matrix(const multivector<cl062, T, L>& N) noexcept {
+    return matrix_blades::to_matrix<false>(N);
+}
+template <class T, auto L>
+[[nodiscard]] constexpr mat6<T> mobility_matrix(const multivector<cl062, T, L>& M) noexcept {
+    return matrix_blades::to_matrix<true>(M);
+}
+// From a matrix: every entry becomes a blade coefficient (a general inertia or mobility; for a
+// rigid body's, mass_properties_of checks the physics).
+template <class T>
+[[nodiscard]] constexpr inertia<T> inertia_from_matrix(const mat6<T>& m) noexcept {
+    return matrix_blades::from_matrix<false, inertia<T>>(m);
+}
+template <class T>
+[[nodiscard]] constexpr mobility<T> mobility_from_matrix(const mat6<T>& m) noexcept {
+    return matrix_blades::from_matrix<true, mobility<T>>(m);
+}
+
+// ---- from mass properties ------------------------------------------------------------------
 
 // The element N of §5 (24 blades; the other 12 entries of the 6×6 matrix vanish for a rigid body).
 template <class T>
@@ -114,7 +166,7 @@ template <class T>
             N[3 + i][j] = -H[i][j];  // m Ĉᵀ = −m Ĉ
         }
     for (int i = 0; i < 3; ++i) N[3 + i][3 + i] = m;
-    return spatial_detail::from_matrix<false, rigid_inertia<T>>(N);
+    return matrix_blades::from_matrix<false, rigid_inertia<T>>(N);
 }
 
 // The mobility M = N⁻¹: the element taking a co-screw (momentum or impulse) to the screw (velocity).
@@ -135,7 +187,7 @@ template <class T>
             // 1/m − Ĉ J Ĉ = 1/m + (Ĉ J) Ĉᵀ
             M[3 + i][3 + j] = (i == j ? inv_m : T(0)) - (CJ[i][0] * C[0][j] + CJ[i][1] * C[1][j] + CJ[i][2] * C[2][j]);
         }
-    return spatial_detail::from_matrix<true, mobility<T>>(M);
+    return matrix_blades::from_matrix<true, mobility<T>>(M);
 }
 
 // §5: the diagonal inertia N = dx a1ae1e + dy a2ae2e + dz a3ae3e + m (a2a3e2e3 + a3a1e3e1 + a1a2e1e2),
@@ -161,14 +213,262 @@ template <class T, auto L>
             rigid = rigid && inertia_detail::abs(n[i][3 + j] + n[3 + i][j]) <= tol;
             rigid = rigid && inertia_detail::abs(n[i][3 + j] + n[j][3 + i]) <= tol;
         }
-    if (!all_finite(m)) return {{}, input_error::non_finite};
-    if (!(m > T(0))) return {{}, input_error::non_positive_mass};
-    if (!rigid) return {{}, input_error::not_a_rigid_inertia};
+    if (!all_finite(m)) return {{}, error_code::non_finite};
+    if (!(m > T(0))) return {{}, error_code::non_positive_mass};
+    if (!rigid) return {{}, error_code::not_a_rigid_inertia};
     const vec3<T> c{n[2][4] / m, n[0][5] / m, n[1][3] / m};  // m Ĉ = [[0, −m cz, m cy], [m cz, 0, −m cx], …]
     mat3<T> Ic{};
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) Ic[i][j] = n[i][j] - m * ((i == j ? linear3::dot(c, c) : T(0)) - c[i] * c[j]);
     return make_mass_properties(m, c, Ic);
+}
+
+// A rigid body's N by its ten parameters: the mass m, the first moment h = m c and the inertia
+// tensor about the body origin I_o (six numbers, symmetric). N = [[I_o, Ĥ], [−Ĥ, m 1]] has 24
+// non-zero blades but only ten distinct coefficients: I_o(i, j) and I_o(j, i) are one number, m
+// sits on three blades and each h_k on four. Inside a formula each parameter is one leaf, so
+// A ∨ (N ∧ s) reads ten numbers instead of 24 and shares their products exactly where the
+// hand-written spatial code does (24m 18a either way).
+template <class T = double>
+struct body_inertia {
+    using scalar = cl062::mv<T, "1">;
+    scalar m, hx, hy, hz;            // mass and first moment h = m c
+    scalar ixx, iyy, izz, ixy, ixz, iyz;  // I_o, the inertia tensor about the body origin
+
+    [[nodiscard]] constexpr T mass() const noexcept { return m[0]; }
+    [[nodiscard]] constexpr vec3<T> first_moment() const noexcept { return {hx[0], hy[0], hz[0]}; }
+    [[nodiscard]] constexpr mat3<T> inertia_o() const noexcept {
+        return {{{ixx[0], ixy[0], ixz[0]}, {ixy[0], iyy[0], iyz[0]}, {ixz[0], iyz[0], izz[0]}}};
+    }
+
+    // As an argument of a formula (formula.hpp): ten leaves, and N as the expression they make,
+    //   N = Σ I_o(i,j) (α_i ε̃_j + α_j ε̃_i)/(1 + δ_ij) + m (a2a3e2e3 + a3a1e3e1 + a1a2e1e2) + Ĥ blocks,
+    // entry (i, j) being the blade α_i ε̃_j (detail/matrix_blades.hpp).
+    [[nodiscard]] constexpr auto parameters() const noexcept { return std::tie(m, hx, hy, hz, ixx, iyy, izz, ixy, ixz, iyz); }
+    static constexpr auto element = [](auto m, auto hx, auto hy, auto hz, auto ixx, auto iyy, auto izz, auto ixy,
+                                       auto ixz, auto iyz) {
+        using G = cl062;
+        return ixx * G::basis<"a1ae1e"> + iyy * G::basis<"a2ae2e"> + izz * G::basis<"a3ae3e"> +
+               ixy * (G::basis<"a1ae2e"> + G::basis<"a2ae1e">) + ixz * (G::basis<"a1ae3e"> + G::basis<"a3ae1e">) +
+               iyz * (G::basis<"a2ae3e"> + G::basis<"a3ae2e">) +
+               m * (G::basis<"a2a3e2e3"> + G::basis<"a3a1e3e1"> + G::basis<"a1a2e1e2">) +
+               // Ĥ in the upper right, −Ĥ = Ĥᵀ in the lower left
+               hx * (G::basis<"a3ae3e1"> - G::basis<"a2ae1e2"> + G::basis<"a3a1e3e"> - G::basis<"a1a2e2e">) +
+               hy * (G::basis<"a1ae1e2"> - G::basis<"a3ae2e3"> - G::basis<"a2a3e3e"> + G::basis<"a1a2e1e">) +
+               hz * (G::basis<"a2ae2e3"> - G::basis<"a1ae3e1"> + G::basis<"a2a3e2e"> - G::basis<"a3a1e1e">);
+    };
+};
+
+template <class T>
+[[nodiscard]] constexpr body_inertia<T> body_inertia_of(const mass_properties<T>& b) noexcept {
+    const T m = b.mass;
+    const vec3<T>& c = b.com;
+    const vec3<T> h{m * c[0], m * c[1], m * c[2]};
+    const T hc = linear3::dot(h, c);
+    // I_o = I_c + m(|c|² 1 − c cᵀ), the parallel-axis theorem
+    const auto io = [&](int i, int j) { return b.inertia_c[i][j] + (i == j ? hc : T(0)) - h[i] * c[j]; };
+    using s = typename body_inertia<T>::scalar;
+    return {s{m}, s{h[0]}, s{h[1]}, s{h[2]}, s{io(0, 0)}, s{io(1, 1)}, s{io(2, 2)}, s{io(0, 1)}, s{io(0, 2)}, s{io(1, 2)}};
+}
+
+// The same element with its 24 blades stored.
+template <class T>
+[[nodiscard]] constexpr rigid_inertia<T> to_rigid_inertia(const body_inertia<T>& N) noexcept {
+    return formula([](auto element) { return element; })(N);
+}
+
+// A rigid body's inertia in its own frame, with what the dynamics needs precomputed once.
+template <class T = double>
+struct rigid_body {
+    mass_properties<T> mass;  // in the body frame
+    rigid_inertia<T> N;       // inertia_of(mass)
+    mobility<T> M;            // mobility_of(mass) = N⁻¹
+};
+
+template <class T>
+[[nodiscard]] constexpr rigid_body<T> make_rigid_body(const mass_properties<T>& b) noexcept {
+    return {b, inertia_of(b), mobility_of(b)};
+}
+// Checked all the way from the raw numbers.
+template <class T>
+[[nodiscard]] constexpr checked<rigid_body<T>> make_rigid_body(const T& mass, const vec3<T>& com,
+                                                               const mat3<T>& inertia_c) noexcept {
+    const auto b = make_mass_properties(mass, com, inertia_c);
+    if (!b) return {{}, b.error};
+    return {make_rigid_body(*b), error_code::none};
+}
+
+// ---- the operations of §5–6 --------------------------------------------------------------
+//
+// N is any of the elements above (body_inertia passes its ten parameters), s a screw of Cl(0,3,1)
+// or lifted, P a co-screw, M a mobility.
+
+// §5: the momentum P = A ∨ (N ∧ s); 24m 18a for a rigid body's N.
+inline constexpr operation momentum{formula([](auto N, auto s) { return invariants::A & (N ^ lift(s)); }),
+                                    into<coscrew>};
+
+// §5: the kinetic energy E_k = ½ s̄ ∨ (N ∧ s) (the formula is twice it).
+inline constexpr operation kinetic_energy{formula([](auto N, auto s) { return bar(lift(s)) & (N ^ lift(s)); }),
+                                          scalar_over<2>};
+
+// §6: dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄) for a body moving with velocity s.
+inline constexpr operation inertia_rate{formula([](auto N, auto s) {
+                                            const auto x = lift(s);
+                                            return half * (x * N - N * x) + half * (bar(x) * N - N * bar(x));
+                                        }),
+                                        into<inertia>};
+
+// The velocity a mobility gives a co-screw: s = E ∨ (M ∧ P), a screw of Cl(0,3,1).
+struct lowered_screw_t {
+    template <class E>
+    [[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<typename E::scalar_type> operator()(const E& e) const noexcept {
+        return lower(lifted_screw<typename E::scalar_type>(e));
+    }
+};
+inline constexpr operation velocity{formula([](auto M, auto P) { return invariants::E & (M ^ P); }), lowered_screw_t{}};
+
+// ---- moving with the body: (g ḡ) N (g ḡ)* (§5) ----------------------------------------------
+//
+// A sandwich by a unit motor is a linear map; on the grade-4 elements it is the congruence with
+// H⁻ᵀ (the outermorphism of the sandwich, §5: h(a ∧ b)h* = (h a h*) ∧ (h b h*)), N' = H⁻ᵀ N H⁻¹,
+// and M' = H M Hᵀ for a mobility. Each is applied through the motor_map (motor.hpp).
+
+// Mass properties move with the body: c' = R c + t, I_c' = R I_c Rᵀ (54m 39a).
+template <class T>
+[[nodiscard]] constexpr mass_properties<T> transform(const motor_map<T>& G, const mass_properties<T>& b) noexcept {
+    return {b.mass, linear3::add(linear3::apply(G.R, b.com), G.t), linear3::rotate_symmetric(G.R, b.inertia_c)};
+}
+
+namespace transform_detail {
+
+// A rigid body's inertia parameters moved by a motor map: the mass is unchanged, and
+template <class T>
+struct moved_inertia {
+    vec3<T> h;                        // h' = R h + m t
+    T xx, yy, zz, xy, xz, yz;         // I_o'
+};
+// (g ḡ) N (g ḡ)* = H⁻ᵀ N H⁻¹ for N = [[I_o, Ĥ], [−Ĥ, m 1]] (h = m c): m' = m, h' = R h + m t and,
+// with u = R h + h' (= 2z for z = R h + (m/2) t),
+//   I_o' = R I_o Rᵀ + (u·t) 1 − (t uᵀ + u tᵀ)/2   (parallel axes: Ĉ² terms of c and of R c + t),
+// i.e. Σ_{k≠i} t_k u_k added on the diagonal and −(t_i u_j + u_i t_j)/2 off it.
+// (R I_o Rᵀ)_ij = R_i·(I_o R_j) for the rows R_i of R; R is a rotation, so tr(R I_o Rᵀ) = tr I_o
+// gives the last diagonal entry and only I_o R_0 and I_o R_1 are formed (54m 50a, 3 halvings).
+// The statement order (R I_o Rᵀ first, then h' and the parallel-axis terms) keeps the live values
+// few: other orders measured 10–25 more instructions (spills) with g++ 12.
+template <class T>
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr moved_inertia<T> move_inertia(const motor_map<T>& G, const T& m, const vec3<T>& h,
+                                                                         const mat3<T>& Io) noexcept {
+    using linear3::dot;
+    const mat3<T>& R = G.R;
+    const vec3<T>& t = G.t;
+    // R I_o Rᵀ, column by column
+    const vec3<T> a0 = linear3::apply(Io, R[0]);
+    const T r00 = dot(R[0], a0), r20 = dot(R[2], a0);
+    const vec3<T> a1 = linear3::apply(Io, R[1]);
+    const T r01 = dot(R[0], a1), r11 = dot(R[1], a1), r21 = dot(R[2], a1);
+    const T r22 = Io[2][2] + (Io[0][0] - r00) + (Io[1][1] - r11);  // the trace is invariant
+    // h' and the parallel-axis terms
+    const vec3<T> y = linear3::apply(R, h);
+    const vec3<T> h2{y[0] + m * t[0], y[1] + m * t[1], y[2] + m * t[2]};
+    const vec3<T> u{y[0] + h2[0], y[1] + h2[1], y[2] + h2[2]};
+    const T xy = r01 - (t[0] * u[1] + u[0] * t[1]) / T(2);
+    const T xz = r20 - (t[0] * u[2] + u[0] * t[2]) / T(2);
+    const T yz = r21 - (t[1] * u[2] + u[1] * t[2]) / T(2);
+    const vec3<T> q{t[0] * u[0], t[1] * u[1], t[2] * u[2]};
+    return {h2, r00 + (q[1] + q[2]), r11 + (q[0] + q[2]), r22 + (q[0] + q[1]), xy, xz, yz};
+}
+
+}  // namespace transform_detail
+
+// (g ḡ) N (g ḡ)* for the 24 stored blades of a rigid body's N (transform_detail::move_inertia).
+template <class T>
+[[nodiscard]] constexpr rigid_inertia<T> transform(const motor_map<T>& G, const rigid_inertia<T>& N) noexcept {
+    using matrix_blades::entry_of;
+    using matrix_blades::set_entry;
+    const T m = entry_of<false, 3, 3>(N);
+    const vec3<T> h{entry_of<false, 2, 4>(N), entry_of<false, 0, 5>(N), entry_of<false, 1, 3>(N)};  // m Ĉ = Ĥ
+    const mat3<T> Io{{{entry_of<false, 0, 0>(N), entry_of<false, 0, 1>(N), entry_of<false, 0, 2>(N)},
+                      {entry_of<false, 1, 0>(N), entry_of<false, 1, 1>(N), entry_of<false, 1, 2>(N)},
+                      {entry_of<false, 2, 0>(N), entry_of<false, 2, 1>(N), entry_of<false, 2, 2>(N)}}};
+    const transform_detail::moved_inertia<T> n = transform_detail::move_inertia(G, m, h, Io);
+    const vec3<T>& h2 = n.h;
+    rigid_inertia<T> out;
+    set_entry<false, 0, 0>(out, n.xx);
+    set_entry<false, 1, 1>(out, n.yy);
+    set_entry<false, 2, 2>(out, n.zz);
+    set_entry<false, 0, 1>(out, n.xy), set_entry<false, 1, 0>(out, n.xy);
+    set_entry<false, 0, 2>(out, n.xz), set_entry<false, 2, 0>(out, n.xz);
+    set_entry<false, 1, 2>(out, n.yz), set_entry<false, 2, 1>(out, n.yz);
+    // m Ĉ' = Ĥ' in the upper right, −Ĥ' in the lower left; m 1 in the mass block
+    set_entry<false, 0, 4>(out, -h2[2]), set_entry<false, 0, 5>(out, h2[1]), set_entry<false, 1, 3>(out, h2[2]);
+    set_entry<false, 1, 5>(out, -h2[0]), set_entry<false, 2, 3>(out, -h2[1]), set_entry<false, 2, 4>(out, h2[0]);
+    set_entry<false, 4, 0>(out, -h2[2]), set_entry<false, 5, 0>(out, h2[1]), set_entry<false, 3, 1>(out, h2[2]);
+    set_entry<false, 5, 1>(out, -h2[0]), set_entry<false, 3, 2>(out, -h2[1]), set_entry<false, 4, 2>(out, h2[0]);
+    set_entry<false, 3, 3>(out, m), set_entry<false, 4, 4>(out, m), set_entry<false, 5, 5>(out, m);
+    return out;
+}
+
+namespace transform_detail {
+
+// L X Lᵀ for L = [[R, 0], [T R, R]] and any 6×6 X: rotate each 3×3 block (R B Rᵀ), then shear
+// by S = [[1, 0], [T, 1]], whose action is a cross product with t column by column.
+template <class T>
+constexpr mat6<T> congruence(const motor_map<T>& G, const mat6<T>& X) noexcept {
+    mat6<T> Y{};
+    for (int bi = 0; bi < 2; ++bi)
+        for (int bj = 0; bj < 2; ++bj) {
+            mat3<T> RB{};  // R B
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    RB[i][j] = G.R[i][0] * X[3 * bi][3 * bj + j] + G.R[i][1] * X[3 * bi + 1][3 * bj + j] +
+                               G.R[i][2] * X[3 * bi + 2][3 * bj + j];
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j) Y[3 * bi + i][3 * bj + j] = linear3::dot(RB[i], G.R[j]);  // (R B) Rᵀ
+        }
+    // rows: [A; C] ↦ [A; T A + C] (left multiplication by S)
+    for (int j = 0; j < 6; ++j) {
+        const vec3<T> tc = linear3::cross(G.t, vec3<T>{Y[0][j], Y[1][j], Y[2][j]});
+        for (int i = 0; i < 3; ++i) Y[3 + i][j] += tc[i];
+    }
+    // columns: [A B] ↦ [A, A Tᵀ + B] (right multiplication by Sᵀ); row x ↦ x Tᵀ = (T xᵀ)ᵀ = t × x
+    for (int i = 0; i < 6; ++i) {
+        const vec3<T> tr = linear3::cross(G.t, vec3<T>{Y[i][0], Y[i][1], Y[i][2]});
+        for (int j = 0; j < 3; ++j) Y[i][3 + j] += tr[j];
+    }
+    return Y;
+}
+
+// P X P with P = [[0, 1], [1, 0]]: H⁻ᵀ = P H P, so a co-screw-side congruence is a screw-side one.
+template <class T>
+constexpr mat6<T> swap_halves(const mat6<T>& X) noexcept {
+    mat6<T> Y{};
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 6; ++j) Y[i][j] = X[(i + 3) % 6][(j + 3) % 6];
+    return Y;
+}
+
+}  // namespace transform_detail
+
+// A general inertia (any 36 coefficients): N' = H⁻ᵀ N H⁻¹.
+template <class T>
+[[nodiscard]] constexpr inertia<T> transform(const motor_map<T>& G, const inertia<T>& N) noexcept {
+    using namespace transform_detail;
+    // H⁻ᵀ = P H P, so H⁻ᵀ N H⁻¹ = P H (P N P) Hᵀ P
+    return inertia_from_matrix(swap_halves(congruence(G, swap_halves(inertia_matrix(N)))));
+}
+
+// A mobility transforms as the inverse of an inertia: M' = H M Hᵀ (so that (N')⁻¹ = M').
+template <class T>
+[[nodiscard]] constexpr mobility<T> transform(const motor_map<T>& G, const mobility<T>& M) noexcept {
+    return mobility_from_matrix(transform_detail::congruence(G, mobility_matrix(M)));
+}
+
+// (g ḡ) N (g ḡ)* on the ten parameters (transform_detail::move_inertia, 54m 50a).
+template <class T>
+[[nodiscard]] constexpr body_inertia<T> transform(const motor_map<T>& G, const body_inertia<T>& N) noexcept {
+    using s = typename body_inertia<T>::scalar;
+    const transform_detail::moved_inertia<T> n = transform_detail::move_inertia(G, N.mass(), N.first_moment(), N.inertia_o());
+    return {N.m, s{n.h[0]}, s{n.h[1]}, s{n.h[2]}, s{n.xx}, s{n.yy}, s{n.zz}, s{n.xy}, s{n.xz}, s{n.yz}};
 }
 
 }  // namespace ctga

@@ -34,7 +34,7 @@
 #include <vector>
 
 #include "ctga/algebra/blade.hpp"      // only for ctga::blade_mask
-#include "ctga/algebra/signature.hpp"  // only for the algebra's description
+#include "ctga/algebra/algebra.hpp"  // only for the algebra's description
 
 namespace ctga::dense {
 

@@ -23,13 +23,14 @@
 // (sphere, axisymmetric or diagonal): then N keeps the plane's velocities in the plane.
 #pragma once
 
+#include <array>
+#include <cstddef>
 #include <tuple>
 #include <type_traits>
 
 #include "ctga/mechanics/dynamics.hpp"
-#include "ctga/mechanics/exp_log.hpp"
-#include "ctga/mechanics/motion.hpp"
-#include "ctga/mechanics/spatial.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/inertia.hpp"
 #include "ctga/integrators/model.hpp"
 
 namespace ctga {
@@ -82,15 +83,32 @@ using scalar = cl062::mv<T, "1">;
 inline constexpr auto rotation_block = cl062::basis<"a1ae1e"> + cl062::basis<"a2ae2e"> + cl062::basis<"a3ae3e">;
 inline constexpr auto mass_block = cl062::basis<"a2a3e2e3"> + cl062::basis<"a3a1e3e1"> + cl062::basis<"a1a2e1e2">;
 
+// A kind's scalars (in the order they are given: m first) and their reciprocals, for the mobility.
+// Both are fixed together by the constructor, the only way to set them, so a reciprocal can never
+// be stale: a body with another mass is a new value.
+template <class T, std::size_t N>
+class scalars_and_reciprocals {
+public:
+    template <class... U>
+        requires(sizeof...(U) == N && (std::is_convertible_v<U, T> && ...))
+    constexpr scalars_and_reciprocals(const U&... v) noexcept
+        : value_{static_cast<T>(v)...}, reciprocal_{T(T(1) / static_cast<T>(v))...} {}
+
+    [[nodiscard]] constexpr const T& m() const noexcept { return value_[0]; }
+    [[nodiscard]] constexpr scalar<T> value(std::size_t i) const noexcept { return scalar<T>{value_[i]}; }
+    [[nodiscard]] constexpr scalar<T> reciprocal(std::size_t i) const noexcept { return scalar<T>{reciprocal_[i]}; }
+
+private:
+    std::array<T, N> value_;
+    std::array<T, N> reciprocal_;
+};
+
 struct sphere {
     template <class T>
-    struct data {
-        T m, d;
-        T inv_m = T(1) / m, inv_d = T(1) / d;  // set once, from the members above
-    };
+    using data = scalars_and_reciprocals<T, 2>;  // m, d
     template <class T>
     static constexpr auto arguments(const data<T>& b) noexcept {
-        return std::tuple{scalar<T>{b.d}, scalar<T>{b.m}, scalar<T>{b.inv_d}, scalar<T>{b.inv_m}};
+        return std::tuple{b.value(1), b.value(0), b.reciprocal(1), b.reciprocal(0)};
     }
     static constexpr auto N = [](auto d, auto m, auto, auto) { return d * rotation_block + m * mass_block; };
     static constexpr auto M = [](auto, auto, auto inv_d, auto inv_m) { return inv_d * mass_block + inv_m * rotation_block; };
@@ -98,14 +116,10 @@ struct sphere {
 
 struct axisymmetric {  // about e3
     template <class T>
-    struct data {
-        T m, d_xy, d_z;
-        T inv_m = T(1) / m, inv_d_xy = T(1) / d_xy, inv_d_z = T(1) / d_z;  // set once
-    };
+    using data = scalars_and_reciprocals<T, 3>;  // m, d_xy, d_z
     template <class T>
     static constexpr auto arguments(const data<T>& b) noexcept {
-        return std::tuple{scalar<T>{b.d_xy},     scalar<T>{b.d_z},     scalar<T>{b.m},
-                          scalar<T>{b.inv_d_xy}, scalar<T>{b.inv_d_z}, scalar<T>{b.inv_m}};
+        return std::tuple{b.value(1), b.value(2), b.value(0), b.reciprocal(1), b.reciprocal(2), b.reciprocal(0)};
     }
     static constexpr auto N = [](auto dxy, auto dz, auto m, auto, auto, auto) {
         return dxy * (cl062::basis<"a1ae1e"> + cl062::basis<"a2ae2e">) + dz * cl062::basis<"a3ae3e"> + m * mass_block;
@@ -118,14 +132,11 @@ struct axisymmetric {  // about e3
 
 struct diagonal {
     template <class T>
-    struct data {
-        T m, dx, dy, dz;
-        T inv_m = T(1) / m, inv_dx = T(1) / dx, inv_dy = T(1) / dy, inv_dz = T(1) / dz;  // set once
-    };
+    using data = scalars_and_reciprocals<T, 4>;  // m, dx, dy, dz
     template <class T>
     static constexpr auto arguments(const data<T>& b) noexcept {
-        return std::tuple{scalar<T>{b.dx},     scalar<T>{b.dy},     scalar<T>{b.dz},     scalar<T>{b.m},
-                          scalar<T>{b.inv_dx}, scalar<T>{b.inv_dy}, scalar<T>{b.inv_dz}, scalar<T>{b.inv_m}};
+        return std::tuple{b.value(1),      b.value(2),      b.value(3),      b.value(0),
+                          b.reciprocal(1), b.reciprocal(2), b.reciprocal(3), b.reciprocal(0)};
     }
     static constexpr auto N = [](auto dx, auto dy, auto dz, auto m, auto, auto, auto, auto) {
         return dx * cl062::basis<"a1ae1e"> + dy * cl062::basis<"a2ae2e"> + dz * cl062::basis<"a3ae3e"> + m * mass_block;
@@ -277,7 +288,7 @@ inline constexpr expr::cost body_step_cost = [] {
 
 // One body of subspace S and inertia structure K under a wrench model, as a model for the
 // integrators (body frame): every operation of a step runs on S's blades. exp and renormalize go through the
-// full motor (closed forms of exp_log.hpp and motion.hpp) and drop the blades that S's motions
+// full motor (closed forms of motor.hpp) and drop the blades that S's motions
 // leave at exactly zero.
 template <class T, class S, class K, class Wrench = wrench_model::none>
 struct body_motion {
@@ -321,7 +332,7 @@ struct body_motion {
     }
     [[nodiscard]] constexpr motor_type compose(const motor_type& a, const motor_type& b) const noexcept { return a * b; }
     [[nodiscard]] constexpr screw_type bracket(const screw_type& a, const screw_type& b) const noexcept {
-        return paper::bracket(a, b);
+        return ctga::bracket.formula(a, b);
     }
     [[nodiscard]] constexpr motor_type renormalize(const motor_type& g) const noexcept {
         return project<motor_type>(ctga::renormalize(motor<T>(g)));

@@ -24,36 +24,35 @@
 #include <boost/hana.hpp>
 
 #include "ctga/integrators/model.hpp"
-#include "ctga/mechanics/exp_log.hpp"
+#include "ctga/mechanics/motor.hpp"
 #include "ctga/mechanics/linear3.hpp"
-#include "ctga/mechanics/motion.hpp"
-#include "ctga/mechanics/spatial.hpp"
+#include "ctga/mechanics/inertia.hpp"
 
 namespace ctga {
 
-// An element of a product of vector spaces (the bodies' motors, or their screws): +, − and
-// scaling act part by part.
+// An element of the product of the bodies' spaces: one motor per moving body, or one screw per
+// moving body (a point of the product group, or of its Lie algebra); +, − and scaling act part by part.
 template <class... X>
-struct product {
+struct per_body {
     boost::hana::tuple<X...> parts;
 
     template <class F, class... Others>
-    [[nodiscard]] friend constexpr product zip_with(F f, const product& a, const Others&... others) {
+    [[nodiscard]] friend constexpr per_body zip_with(F f, const per_body& a, const Others&... others) {
         return {boost::hana::unpack(boost::hana::zip(a.parts, others.parts...), [&](const auto&... part) {
             return boost::hana::make_tuple(boost::hana::unpack(part, [&](const auto&... x) {
                 return std::remove_cvref_t<decltype(boost::hana::front(part))>(f(x...));
             })...);
         })};
     }
-    [[nodiscard]] friend constexpr product operator+(const product& a, const product& b) {
+    [[nodiscard]] friend constexpr per_body operator+(const per_body& a, const per_body& b) {
         return zip_with([](const auto& x, const auto& y) { return x + y; }, a, b);
     }
-    [[nodiscard]] friend constexpr product operator-(const product& a, const product& b) {
+    [[nodiscard]] friend constexpr per_body operator-(const per_body& a, const per_body& b) {
         return zip_with([](const auto& x, const auto& y) { return x - y; }, a, b);
     }
     template <class T>
         requires std::is_arithmetic_v<T>
-    [[nodiscard]] friend constexpr product operator*(const T& c, const product& a) {
+    [[nodiscard]] friend constexpr per_body operator*(const T& c, const per_body& a) {
         return zip_with([&](const auto& x) { return c * x; }, a);
     }
 };
@@ -132,8 +131,8 @@ struct scene_model<springs<Springs...>, Models...> {
     static_assert(sizeof...(Models) > 0, "ctga: a scene needs at least one moving body");
     static_assert(((Models::velocity_frame == frame::body) && ...), "ctga: scene bodies use body-frame velocities");
     using scalar_type = std::common_type_t<typename Models::scalar_type...>;
-    using motor_type = product<typename Models::motor_type...>;
-    using screw_type = product<typename Models::screw_type...>;
+    using motor_type = per_body<typename Models::motor_type...>;
+    using screw_type = per_body<typename Models::screw_type...>;
     static constexpr frame velocity_frame = frame::body;
 
     boost::hana::tuple<Models...> bodies;
@@ -143,7 +142,7 @@ struct scene_model<springs<Springs...>, Models...> {
     template <std::size_t B>
     static constexpr bool attached = ((Springs::first == B || Springs::second == B) || ...);
 
-    // f(body, parts of the arguments...) for every body, collected into a product of type R.
+    // f(body, parts of the arguments...) for every body, collected into a per_body of type R.
     template <class R, class F, class... A>
     [[nodiscard]] constexpr R each(F f, const A&... a) const {
         return {boost::hana::unpack(boost::hana::zip(bodies, a.parts...), [&](const auto&... row) {
@@ -269,15 +268,15 @@ template <class... X>
     return {boost::hana::make_tuple(x...)};
 }
 
-// f(part) for every body's part of a product, in order.
+// f(part) for every body's part of a per_body, in order.
 template <class... X, class F>
-constexpr void for_each_part(const product<X...>& p, F&& f) {
+constexpr void for_each_part(const per_body<X...>& p, F&& f) {
     boost::hana::for_each(p.parts, f);
 }
 
-// Body i's part of a product (its motor or its screw).
+// Body i's part of a per_body (its motor or its screw).
 template <std::size_t I, class... X>
-[[nodiscard]] constexpr const auto& part(const product<X...>& p) noexcept {
+[[nodiscard]] constexpr const auto& part(const per_body<X...>& p) noexcept {
     return boost::hana::at_c<I>(p.parts);
 }
 

@@ -12,6 +12,7 @@
 #include "ctga/algebra/blade.hpp"
 #include "ctga/algebra/fixed_string.hpp"
 #include "ctga/algebra/layout.hpp"
+#include "ctga/algebra/multivector.hpp"
 
 namespace ctga {
 
@@ -60,25 +61,6 @@ constexpr bool names_unique(const generator_names<N>& g) {
 
 }  // namespace detail
 
-// Outcome of reading a blade name such as "e3e1" or "a1a2a3a".
-template <class Alg, class T, auto Layout>
-class multivector;
-
-namespace detail {
-template <class Alg, fixed_string... Names>
-struct named_layout_of;  // multivector.hpp
-template <class Alg, fixed_string Name>
-struct basis_constant;  // expr/expression.hpp
-}
-
-enum class blade_name_status { ok, unknown_generator, repeated_generator };
-
-struct parsed_blade {
-    blade_name_status status = blade_name_status::ok;
-    blade_mask mask = 0;
-    int sign = 1;  // the written order's orientation relative to the canonical one
-};
-
 template <fixed_string Names, int... Squares>
 struct algebra {
     static constexpr std::size_t dimension = sizeof...(Squares);
@@ -121,7 +103,7 @@ public:
     // the paper's invariants A = basis<"a1a2a3a">, E = basis<"e1e2e3e">. Products with it cost
     // no multiplication.
     template <fixed_string Name>
-    static constexpr auto basis = detail::basis_constant<algebra, Name>::value;
+    static constexpr basis_blade<algebra, Name> basis{};
 
     // Generator I (0-based, in the declared order) as a grade-1 multivector.
     template <std::size_t I, class T = double>

@@ -8,7 +8,7 @@
 #include <type_traits>
 
 #include "ctga/algebra/multivector.hpp"
-#include "ctga/algebra/operations.hpp"
+#include "ctga/operations/evaluate.hpp"
 
 namespace ctga {
 

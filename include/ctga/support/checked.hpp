@@ -1,0 +1,72 @@
+// Checked results: what can be wrong at run time (a non-finite number, a non-positive mass, an
+// inertia tensor violating the triangle inequalities, a matrix that is not a rigid motion, an
+// implicit step that does not converge) is reported as a value, never propagated into a state
+// that looks fine.
+//
+//   auto body = ctga::make_mass_properties(m, com, tensor);   // checked<mass_properties<double>>
+//   if (!body) std::puts(ctga::describe(body.error));
+//   use(*body);
+//
+// No exceptions and no heap: a checked<V> is the value plus an error code. Reading the value of a
+// failed check is a logic error; it asserts in debug builds.
+#pragma once
+
+#include <cassert>
+
+#include "ctga/support/math.hpp"
+
+namespace ctga {
+
+enum class error_code : unsigned char {
+    none,
+    // inputs
+    non_finite,             // a NaN or an infinity among the inputs
+    non_positive_mass,      // m ≤ 0
+    not_symmetric,          // an inertia tensor with I_ij ≠ I_ji beyond rounding
+    not_positive_definite,  // a principal moment ≤ 0
+    triangle_inequality,    // principal moments with I_i > I_j + I_k: no mass distribution has them
+    not_a_rotation,         // the 3×3 block of a homogeneous matrix is not orthonormal with det +1
+    not_homogeneous,        // the bottom row of a homogeneous matrix is not (0, 0, 0, 1)
+    not_a_motor,            // g g* = 1 fails beyond repair (zero or non-finite rotor part)
+    not_a_rigid_inertia,    // a 6×6 inertia without the form [[I, m Ĉ], [m Ĉᵀ, m 1]] of §2
+    // computations
+    did_not_converge,       // an implicit integration step's iteration did not converge
+};
+
+// The name of error_code before it also reported failed computations.
+using input_error [[deprecated("ctga::input_error is now ctga::error_code")]] = error_code;
+
+[[nodiscard]] constexpr const char* describe(error_code e) noexcept {
+    switch (e) {
+        case error_code::none: return "ok";
+        case error_code::non_finite: return "ctga: non-finite input (NaN or infinity)";
+        case error_code::non_positive_mass: return "ctga: the mass must be positive";
+        case error_code::not_symmetric: return "ctga: the inertia tensor must be symmetric";
+        case error_code::not_positive_definite: return "ctga: the inertia tensor must be positive definite";
+        case error_code::triangle_inequality:
+            return "ctga: the principal moments violate the triangle inequality I_i <= I_j + I_k";
+        case error_code::not_a_rotation: return "ctga: the 3x3 block is not a rotation (orthonormal, det +1)";
+        case error_code::not_homogeneous: return "ctga: the bottom row of a homogeneous matrix must be 0 0 0 1";
+        case error_code::not_a_rigid_inertia:
+            return "ctga: not a rigid body's inertia (mass block m*1, coupling block m*C antisymmetric)";
+        case error_code::not_a_motor: return "ctga: not a rigid motion (the rotor part is zero or non-finite)";
+        case error_code::did_not_converge:
+            return "ctga: the implicit step did not converge (the step is too large for the angular velocity)";
+    }
+    return "ctga: unknown error";
+}
+
+template <class V>
+struct checked {
+    V value{};
+    error_code error = error_code::none;
+
+    [[nodiscard]] constexpr explicit operator bool() const noexcept { return error == error_code::none; }
+    [[nodiscard]] constexpr const V& operator*() const noexcept {
+        assert(error == error_code::none && "ctga: reading the value of a failed check");
+        return value;
+    }
+    [[nodiscard]] constexpr const V* operator->() const noexcept { return &**this; }
+};
+
+}  // namespace ctga

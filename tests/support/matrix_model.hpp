@@ -15,8 +15,8 @@
 //   fixed frame: N' = H⁻ᵀ N H⁻¹, M' = H M Hᵀ, H = [[R, 0], [T R, R]] the adjoint of g
 //   (R the rotation of α, t = 2 vec(β ᾱ), T x = t × x; H⁻¹ = [[Rᵀ, 0], [−Rᵀ T, Rᵀ]])
 //   motor_rate ½ s g (fixed) or ½ g s (body), compose: the dual-quaternion product,
-//   exp(z) = e^{z/2} in the closed form of exp_log.hpp, bracket (ω1 × ω2, ω1 × v2 − ω2 × v1)
-//   = crm(s1) s2, renormalize: the division by the dual norm of motion.hpp.
+//   exp(z) = e^{z/2} in the closed form of mechanics/motor.hpp, bracket (ω1 × ω2, ω1 × v2 − ω2 × v1)
+//   = crm(s1) s2, renormalize: the division by the dual norm of mechanics/motor.hpp.
 //
 // Off the unit motors (see dense_model.hpp): H is read from g with the formula of a unit
 // quaternion, R = 1 + 2 α0 α̂ + 2 α̂² (α̂ the cross-product matrix of (α1, α2, α3)), and Rᵀ

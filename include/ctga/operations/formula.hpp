@@ -94,7 +94,9 @@ constexpr auto argument_placeholder() noexcept {
 template <class F, class... Args>
 constexpr auto call_with_placeholders(const F& f) noexcept {
     return [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return f(argument_placeholder<first_leaf<Args...>[I], std::tuple_element_t<I, std::tuple<Args...>>>()...);
+        // as an expression: a body may return a basis blade (the paper's E) or a leaf alone
+        return as_expression(
+            f(argument_placeholder<first_leaf<Args...>[I], std::tuple_element_t<I, std::tuple<Args...>>>()...));
     }(std::index_sequence_for<Args...>{});
 }
 template <class F, class... Args>

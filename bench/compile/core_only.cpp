@@ -4,7 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include <ctga/core.hpp>
+#include <ctga/operations/formula.hpp>
+#include <ctga/operations/operators.hpp>
 #include <ctga/mechanics/algebras.hpp>
 
 using G = ctga::cl031;

@@ -18,4 +18,4 @@ constexpr auto P = A & (N ^ s);                       // P = A ∨ (N ∧ s), a 
 static_assert(ctga::scalar_part(P & (Q0 ^ s)) == 0.8); // P ∨ (Q0 ∧ s) = 2 E_k = dz ωz² + m vx², at compile time
 static_assert((A & (Q0 ^ s)) == ctga::bar(s));        // A ∨ (Q0 ∧ s) = s̄
 
-int main() { std::cout << P << "\n"; }                // 1*a2a3 + 0.3*a3a
+int main() { std::cout << P << "\n"; }                // a2a3 + 0.3*a3a

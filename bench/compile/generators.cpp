@@ -4,6 +4,7 @@
 //   1  two general vectors         (n blades each)
 //   2  two general bivectors       (n(n−1)/2 blades each)
 //   3  two general even elements   (2^(n−1) blades each)
+//   4  two general multivectors    (2^n blades each)
 // ctga has no global product tables: each product's blade pairs, signs and program are
 // computed at compile time for that product's operand types, so this is the cost of one
 // algebra plus one product. With CTGA_REPORT the program also prints the operand and result
@@ -75,8 +76,10 @@ struct keep_grades { constexpr bool operator()(int g) const { return g == 1; } }
 struct keep_grades { constexpr bool operator()(int g) const { return g == 2; } };
 #elif CTGA_PRODUCT == 3
 struct keep_grades { constexpr bool operator()(int g) const { return g % 2 == 0; } };
+#elif CTGA_PRODUCT == 4
+struct keep_grades { constexpr bool operator()(int) const { return true; } };
 #else
-#error "CTGA_PRODUCT must be 1 (vectors), 2 (bivectors) or 3 (even elements)"
+#error "CTGA_PRODUCT must be 1 (vectors), 2 (bivectors), 3 (even elements) or 4 (general multivectors)"
 #endif
 using operand = ctga::multivector<G, double, blades_of_grades(keep_grades{})>;
 

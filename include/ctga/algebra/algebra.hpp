@@ -67,6 +67,17 @@ struct algebra {
     static constexpr std::array<int, dimension> squares{Squares...};
     static constexpr std::size_t blade_count = std::size_t{1} << dimension;
     static constexpr blade_mask pseudoscalar_mask = static_cast<blade_mask>(blade_count - 1);
+    // the generators squaring to 0 and to −1, as blade masks (rules.hpp reads the metric here)
+    static constexpr blade_mask null_mask = [] {
+        blade_mask m = 0;
+        for (std::size_t i = 0; i < dimension; ++i) m |= squares[i] == 0 ? blade_mask{1} << i : 0;
+        return m;
+    }();
+    static constexpr blade_mask negative_mask = [] {
+        blade_mask m = 0;
+        for (std::size_t i = 0; i < dimension; ++i) m |= squares[i] < 0 ? blade_mask{1} << i : 0;
+        return m;
+    }();
 
     static_assert(dimension >= 1, "ctga::algebra: an algebra needs at least one generator");
     static_assert(dimension <= max_generators, "ctga::algebra: at most 16 generators are supported");

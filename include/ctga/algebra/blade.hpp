@@ -19,13 +19,33 @@ struct signed_blade {
 
 [[nodiscard]] constexpr int blade_grade(blade_mask m) noexcept { return std::popcount(m); }
 
+// Bit j of parity_above(a) is the parity of a's generators above j (a prefix-xor from the top);
+// bit j of parity_below(a), of those below j.
+[[nodiscard]] constexpr blade_mask parity_above(blade_mask a) noexcept {
+    blade_mask p = a >> 1;
+    p ^= p >> 1;
+    p ^= p >> 2;
+    p ^= p >> 4;
+    p ^= p >> 8;
+    p ^= p >> 16;
+    return p;
+}
+[[nodiscard]] constexpr blade_mask parity_below(blade_mask a) noexcept {
+    blade_mask p = a << 1;
+    p ^= p << 1;
+    p ^= p << 2;
+    p ^= p << 4;
+    p ^= p << 8;
+    p ^= p << 16;
+    return p;
+}
+
 // Sign of the permutation that sorts the word (generators of a ascending, then generators of
-// b ascending) into ascending order: (-1)^(number of pairs i in a, j in b with i > j).
-// For disjoint a, b this is the sign in  a ∧ b = reorder_sign(a, b) · (a|b).
+// b ascending) into ascending order: (-1)^(number of pairs i in a, j in b with i > j), the
+// parity of b's bits where parity_above(a) is set. For disjoint a, b this is the sign in
+// a ∧ b = reorder_sign(a, b) · (a|b).
 [[nodiscard]] constexpr int reorder_sign(blade_mask a, blade_mask b) noexcept {
-    int swaps = 0;  // for each generator j of b, the generators of a above it
-    for (; b != 0; b &= b - 1) swaps += std::popcount(a & ~((b & (0u - b)) * 2u - 1u));
-    return (swaps & 1) ? -1 : 1;
+    return (std::popcount(parity_above(a) & b) & 1) ? -1 : 1;
 }
 
 // Outcome of reading a blade name such as "e3e1" or "a1a2a3a" (algebra::parse_blade).

@@ -16,17 +16,45 @@ namespace ctga::rules {
 
 inline constexpr signed_blade zero{0, 0};
 
+// Every bilinear rule also has a row form: for a fixed left blade a, the right blades b it does
+// not kill are those with (b & care) == want, and then
+//   a ∘ b = sign · (−1)^popcount(b & parity) · blade(a ^ b ^ flip).
+// Looped products (expr/looped.hpp) build their tables from it with word-wide bit operations
+// over whole rows of blades instead of one rule application per pair; the engine test checks it
+// against apply for every pair of several algebras.
+struct row_form {
+    blade_mask care = 0;
+    blade_mask want = 0;  // want ⊄ care: the whole row is zero
+    blade_mask parity = 0;
+    int sign = 1;
+    blade_mask flip = 0;
+};
+inline constexpr row_form dead_row{0, 1, 0, 1, 0};
+
+// (reorder_sign(a, b) = (−1)^popcount(parity_above(a) & b) = (−1)^popcount(a & parity_below(b)),
+// blade.hpp.)
+
+// The sign of the geometric product as a parity over b: reordering, and one −1 per common
+// generator squaring to −1.
+template <class Alg>
+constexpr row_form geometric_row(blade_mask a, blade_mask care, blade_mask want) noexcept {
+    return {care, want, parity_above(a) ^ (a & Alg::negative_mask), 1, 0};
+}
+
 // Geometric product of basis blades: sort the word a·b (each swap of distinct generators flips
-// the sign), then contract equal neighbours to their square. A square 0 kills the term.
+// the sign), then contract equal neighbours to their square. A square 0 kills the term; each
+// square −1 flips the sign.
 template <class Alg>
 struct geometric {
     static constexpr std::uint64_t id = 1;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
-        int sign = reorder_sign(a, b);
-        for (blade_mask common = a & b; common != 0 && sign != 0; common &= common - 1)
-            sign *= Alg::squares[std::countr_zero(common)];
-        return sign == 0 ? zero : signed_blade{a ^ b, sign};
+        const blade_mask common = a & b;
+        if (common & Alg::null_mask) return zero;
+        const int metric = (std::popcount(common & Alg::negative_mask) & 1) ? -1 : 1;
+        return signed_blade{a ^ b, reorder_sign(a, b) * metric};
     }
+    // b survives unless it shares a null generator with a
+    static constexpr row_form row(blade_mask a) noexcept { return geometric_row<Alg>(a, a & Alg::null_mask, 0); }
 };
 
 // Exterior product: the geometric product of blades with no common generator, else 0.
@@ -36,6 +64,7 @@ struct exterior {
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (a & b) ? zero : signed_blade{a | b, reorder_sign(a, b)};
     }
+    static constexpr row_form row(blade_mask a) noexcept { return {a, 0, parity_above(a), 1, 0}; }
 };
 
 // Left contraction a ⌋ b: the grade gr(b) − gr(a) part of ab, non-zero only when a ⊆ b.
@@ -44,6 +73,10 @@ struct left_contraction {
     static constexpr std::uint64_t id = 3;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (a & ~b) ? zero : geometric<Alg>::apply(a, b);
+    }
+    // a ⊆ b, so a & b = a: a null generator in a kills the row
+    static constexpr row_form row(blade_mask a) noexcept {
+        return (a & Alg::null_mask) ? dead_row : geometric_row<Alg>(a, a, a);
     }
 };
 
@@ -54,6 +87,10 @@ struct right_contraction {
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (b & ~a) ? zero : geometric<Alg>::apply(a, b);
     }
+    // b ⊆ a, and no null generator in common
+    static constexpr row_form row(blade_mask a) noexcept {
+        return geometric_row<Alg>(a, (Alg::pseudoscalar_mask & ~a) | (a & Alg::null_mask), 0);
+    }
 };
 
 // Scalar product: the grade-0 part of ab.
@@ -62,6 +99,9 @@ struct scalar {
     static constexpr std::uint64_t id = 5;
     static constexpr signed_blade apply(blade_mask a, blade_mask b) noexcept {
         return (a != b) ? zero : geometric<Alg>::apply(a, b);
+    }
+    static constexpr row_form row(blade_mask a) noexcept {
+        return (a & Alg::null_mask) ? dead_row : geometric_row<Alg>(a, Alg::pseudoscalar_mask, a);
     }
 };
 
@@ -81,6 +121,13 @@ struct regressive {
         const blade_mask k = all & ~c;
         const blade_mask r = b & c;
         return {r, reorder_sign(k, r) * reorder_sign(k, c)};
+    }
+    // c = K ∪ r with K = ∁b and r = b ∩ c; then k = b \ r and the sign is reorder_sign(b \ r, K)
+    // = reorder_sign(b, K) · (−1)^popcount(r & parity_below(K)); the result b ∩ c = b ^ c ^ I.
+    static constexpr row_form row(blade_mask b) noexcept {
+        constexpr blade_mask all = Alg::pseudoscalar_mask;
+        const blade_mask k = all & ~b;
+        return {k, k, b & parity_below(k), reorder_sign(b, k), all};
     }
 };
 

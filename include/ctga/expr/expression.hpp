@@ -26,6 +26,7 @@
 #include <boost/hana/unpack.hpp>
 
 #include "ctga/algebra/multivector.hpp"
+#include "ctga/expr/looped.hpp"
 #include "ctga/expr/nodes.hpp"
 #include "ctga/expr/program.hpp"
 #include "ctga/expr/rational.hpp"
@@ -67,12 +68,30 @@ template <std::size_t I, auto L, class M>
 struct relabel<arg<I, L>, M> { using type = typename M::template on_arg<I, L>; };
 template <class R, class X, class Y, class M>
 struct relabel<product<R, X, Y>, M> { using type = product<R, relabel_t<X, M>, relabel_t<Y, M>>; };
+template <class R, class X, class Y, class M>
+struct relabel<looped<R, X, Y>, M> { using type = looped<R, relabel_t<X, M>, relabel_t<Y, M>>; };
 template <class R, class X, class M>
 struct relabel<map<R, X>, M> { using type = map<R, relabel_t<X, M>>; };
 template <class X, class Y, int S, class M>
 struct relabel<sum<X, Y, S>, M> { using type = sum<relabel_t<X, M>, relabel_t<Y, M>, S>; };
 template <rational Q, class X, class M>
 struct relabel<scaled<Q, X>, M> { using type = scaled<Q, relabel_t<X, M>>; };
+
+// Every product of a node tree formed again in mode M (looped or unrolled, as the user forces).
+template <class N, product_mode M>
+struct reform { using type = N; };  // leaves, arguments, constants
+template <class N, product_mode M>
+using reform_t = typename reform<N, M>::type;
+template <class R, class X, class Y, product_mode M>
+struct reform<product<R, X, Y>, M> { using type = product_node<R, reform_t<X, M>, reform_t<Y, M>, M>; };
+template <class R, class X, class Y, product_mode M>
+struct reform<looped<R, X, Y>, M> { using type = product_node<R, reform_t<X, M>, reform_t<Y, M>, M>; };
+template <class R, class X, product_mode M>
+struct reform<map<R, X>, M> { using type = map<R, reform_t<X, M>>; };
+template <class X, class Y, int S, product_mode M>
+struct reform<sum<X, Y, S>, M> { using type = sum<reform_t<X, M>, reform_t<Y, M>, S>; };
+template <rational Q, class X, product_mode M>
+struct reform<scaled<Q, X>, M> { using type = scaled<Q, reform_t<X, M>>; };
 
 // The right operand of a combination: its data leaves numbered after the left operand's.
 template <std::size_t Off>
@@ -118,11 +137,9 @@ public:
     // The components of target layout TL (blades of the expression outside TL are not computed).
     template <class U, auto TL>
     [[nodiscard]] CTGA_ALWAYS_INLINE constexpr std::array<U, TL.size()> evaluate() const noexcept {
-        using program = expr::program<Node, TL>;
         const std::array<const U*, leaf_count> pointers =
             boost::hana::unpack(leaves, [](const auto&... l) { return std::array<const U*, leaf_count>{l.data()...}; });
-        if constexpr (program::terms.size() <= expr::inline_terms) return expr::run<U, program, TL.size()>(pointers.data());
-        else return expr::run_looped<U, program, TL.size()>(pointers.data());
+        return expr::compute<U, Node, TL>(pointers.data());
     }
 
     // The coefficient of a blade named as written; only that component is computed.
@@ -200,11 +217,12 @@ constexpr void check_operands() {
                   "ctga: the operands have different scalar types; convert one explicitly");
 }
 
-// Node formers: what x ∘ y becomes, given the algebra and the operands' nodes.
-template <template <class> class Rule>
+// Node formers: what x ∘ y becomes, given the algebra and the operands' nodes. A product is
+// unrolled or looped by the number of its blade pairs (looped.hpp), unless forced.
+template <template <class> class Rule, product_mode Mode = product_mode::by_threshold>
 struct bilinear {
     template <class Alg, class NX, class NY>
-    using node = product<Rule<Alg>, NX, NY>;
+    using node = product_node<Rule<Alg>, NX, NY, Mode>;
 };
 template <int S>
 struct additive {
@@ -235,6 +253,15 @@ constexpr auto apply_map(X&& x) noexcept {
     using alg = typename EX::algebra_type;
     using target = std::conditional_t<std::is_void_v<Target>, alg, Target>;
     return make_expression<target, typename EX::scalar_type, map<Rule<alg>, typename EX::node_type>>(std::move(ex.leaves));
+}
+
+// x with every product formed in mode M.
+template <product_mode M, class X>
+constexpr auto in_mode(X&& x) noexcept {
+    auto ex = as_expression(std::forward<X>(x));
+    using EX = decltype(ex);
+    return make_expression<typename EX::algebra_type, typename EX::scalar_type, reform_t<typename EX::node_type, M>>(
+        std::move(ex.leaves));
 }
 
 template <rational Q, class X>

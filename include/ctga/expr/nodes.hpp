@@ -6,6 +6,8 @@
 //   constant<L, C>      a compile-time constant (the paper's A, E, Q0), exact coefficients C
 //   product<Rule, X, Y> a bilinear product        map<Rule, X>  a linear blade rule
 //   sum<X, Y, S>        X + S·Y (S = ±1)          scaled<Q, X>  Q·X, Q an exact rational
+//   looped<Rule, X, Y>  a bilinear product past the unrolling threshold: X and Y evaluated on
+//                       their own, then one loop over a table of surviving blade pairs (looped.hpp)
 //
 #pragma once
 
@@ -23,6 +25,8 @@ template <auto L, auto C>
 struct constant {};
 template <class Rule, class X, class Y>
 struct product {};
+template <class Rule, class X, class Y>
+struct looped {};
 template <class Rule, class X>
 struct map {};
 template <class X, class Y, int S>

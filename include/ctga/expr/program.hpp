@@ -13,9 +13,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
+#include "ctga/expr/looped.hpp"
 #include "ctga/expr/normal_form.hpp"
 #include "ctga/expr/staging.hpp"
 
@@ -100,9 +102,26 @@ struct program_data {
     std::size_t assignment_count = 0;
 };
 
-// Assemble the program computing target layout TL from root node Root.
+template <class List>
+struct hash_list;
+template <class... Ls>
+struct hash_list<type_list<Ls...>> {
+    static constexpr std::array<std::uint64_t, sizeof...(Ls)> value{traits<Ls>::hash...};
+};
+
+// What a looped node costs, its operands' programs included (specialised below).
+template <class Node>
+struct looped_price;
+
+// Assemble the program computing target layout TL from root node Root. The looped products
+// in it (looped.hpp) are computed before it runs and read as further leaves, numbered from
+// leaf_base on.
 template <class Root, auto TL>
 struct program {
+    using looped_list = typename unique_by_hash<looped_nodes_t<Root>>::type;
+    static constexpr auto& looped_hashes = hash_list<looped_list>::value;
+    static constexpr std::size_t looped_count = looped_hashes.size();
+
     using intermediates = typename unique_by_hash<typename traits<Root>::staged>::type;
     using flat = flat_intermediates<intermediates>;
     static constexpr auto& root_terms = traits<Root>::terms;
@@ -145,6 +164,25 @@ struct program {
         return comps.comp_base[which(source_of(f))] + component_of(f);
     }
 
+    // One past the highest leaf any term reads: the first of the looped products' slots.
+    static constexpr std::uint32_t leaf_base = [] {
+        std::uint32_t b = 0;
+        auto scan = [&](const term& t) {
+            for (std::uint32_t d = 0; d < t.degree; ++d) {
+                const source_id s = source_of(t.f[d]);
+                if (!(s & intermediate_bit) && !is_looped_source(s) && s + 1 > b) b = static_cast<std::uint32_t>(s + 1);
+            }
+        };
+        for (const term& t : root_terms) scan(t);
+        for (std::size_t u = 0; u < nt; ++u) scan(flat::terms[u]);
+        return b;
+    }();
+    static constexpr std::uint32_t looped_slot(source_id s) {
+        for (std::size_t i = 0; i < looped_count; ++i)
+            if (looped_id(looped_hashes[i]) == s) return leaf_base + static_cast<std::uint32_t>(i);
+        return ~std::uint32_t{0};
+    }
+
     static constexpr auto draft = [] {
         // 1. which intermediate components are needed: the target's terms, then backwards
         //    (an intermediate depends only on earlier ones)
@@ -172,6 +210,7 @@ struct program {
             o.c = t.c * rational{sign, 1};
             for (std::uint32_t d = 0; d < t.degree; ++d) {
                 if (source_of(t.f[d]) & intermediate_bit) o.f[d] = tmp_flag | slot[global_component(t.f[d])];
+                else if (is_looped_source(source_of(t.f[d]))) o.f[d] = looped_slot(source_of(t.f[d])) << leaf_shift | component_of(t.f[d]);
                 else o.f[d] = static_cast<std::uint32_t>(source_of(t.f[d])) << leaf_shift | component_of(t.f[d]);
             }
             return o;
@@ -218,9 +257,15 @@ struct program {
         return o;
     }();
 
-    // What the program costs (computed only when asked for, by cost_of).
+    template <class... Ls>
+    static constexpr cost looped_prices(type_list<Ls...>) {
+        return (looped_price<Ls>::value + ... + cost{});
+    }
+
+    // What the program costs (computed only when asked for, by cost_of), the looped products it
+    // reads included.
     static constexpr cost price = [] {
-        cost c;
+        cost c = looped_prices(looped_list{});
         // 4. the price: additions per assignment; multiplications counting each distinct
         //    monomial prefix once (the same leaf product is computed once), plus coefficients
         std::vector<std::uint64_t> prefixes;
@@ -235,6 +280,21 @@ struct program {
         std::sort(prefixes.begin(), prefixes.end());
         c.mul += static_cast<std::size_t>(std::unique(prefixes.begin(), prefixes.end()) - prefixes.begin());
         return c;
+    }();
+};
+
+// A looped product: one multiplication and one addition per pair; its operands' own programs
+// (a leaf is read in place, for nothing).
+template <class X>
+constexpr cost operand_price() {
+    if constexpr (read_in_place<X>) return cost{};
+    else return program<X, node_layout<X>>::price;
+}
+template <class Rule, class X, class Y>
+struct looped_price<looped<Rule, X, Y>> {
+    using rows = rows_of<Rule, X, Y>;
+    static constexpr cost value = [] {
+        return cost{rows::pairs, rows::pairs} + operand_price<X>() + operand_price<Y>();
     }();
 };
 

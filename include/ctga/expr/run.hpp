@@ -7,8 +7,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <tuple>
 #include <utility>
 
+#include "ctga/expr/looped.hpp"
 #include "ctga/expr/normal_form.hpp"
 #include "ctga/expr/program.hpp"
 #include "ctga/expr/rational.hpp"
@@ -147,6 +149,61 @@ template <class T, class P, std::size_t N>
         (a < P::tmp_count ? tmp[a] : out[a - P::tmp_count]) = acc;
     }
     return out;
+}
+
+// ---- from a node to its values: unrolled, looped program, or looped product ------------------
+
+template <class U, class Node, auto TL>
+constexpr std::array<U, TL.size()> compute(const U* const* leaves) noexcept;
+
+template <class U, class P, std::size_t N>
+CTGA_ALWAYS_INLINE constexpr std::array<U, N> run_program(const U* const* leaves) noexcept {
+    if constexpr (P::terms.size() <= inline_terms) return run<U, P, N>(leaves);
+    else return run_looped<U, P, N>(leaves);
+}
+
+// A looped product's operand: a leaf in place, anything else evaluated into its canonical layout.
+template <class U, class X>
+constexpr auto operand_values(const U* const* leaves) noexcept {
+    if constexpr (read_in_place<X>) return leaves[leaf_index<X>];
+    else return compute<U, X, node_layout<X>>(leaves);
+}
+template <class U>
+constexpr const U* data_of(const U* p) noexcept { return p; }
+template <class U, std::size_t N>
+constexpr const U* data_of(const std::array<U, N>& a) noexcept { return a.data(); }
+
+template <class U, auto TL, class Rule, class X, class Y>
+constexpr std::array<U, TL.size()> compute_looped(const U* const* leaves, looped<Rule, X, Y>*) noexcept {
+    const auto x = operand_values<U, X>(leaves);
+    const auto y = operand_values<U, Y>(leaves);
+    return run_rows<U, pair_rows<Rule, operand_layout<X>, operand_layout<Y>>, operand_layout<Y>, TL>(data_of(x), data_of(y));
+}
+
+// The program of P, after its looped products: each computed once, then read as leaves
+// leaf_base, leaf_base + 1, …
+template <class U, class P, std::size_t N, class... Ls>
+constexpr std::array<U, N> run_after_looped(const U* const* leaves, type_list<Ls...>) noexcept {
+    const std::tuple<std::array<U, node_layout<Ls>.size()>...> values{compute<U, Ls, node_layout<Ls>>(leaves)...};
+    std::array<const U*, P::leaf_base + sizeof...(Ls)> all{};
+    for (std::size_t i = 0; i < P::leaf_base; ++i) all[i] = leaves[i];
+    std::apply([&](const auto&... v) {
+        std::size_t k = P::leaf_base;
+        ((all[k++] = v.data()), ...);
+    }, values);
+    return run_program<U, P, N>(all.data());
+}
+
+// The components of layout TL of Node's value, from the leaves' storage.
+template <class U, class Node, auto TL>
+CTGA_ALWAYS_INLINE constexpr std::array<U, TL.size()> compute(const U* const* leaves) noexcept {
+    if constexpr (is_looped_node<Node>) {
+        return compute_looped<U, TL>(leaves, static_cast<Node*>(nullptr));
+    } else {
+        using P = program<Node, TL>;
+        if constexpr (P::looped_count == 0) return run_program<U, P, TL.size()>(leaves);
+        else return run_after_looped<U, P, TL.size()>(leaves, typename P::looped_list{});
+    }
 }
 
 }  // namespace ctga::expr

@@ -261,8 +261,9 @@ struct traits<product<Rule, X, Y>, staging::by_cost> {
     static constexpr bool stage_y = choice == 2 || choice == 3;
     using chosen = product_option<Rule, X, Y, stage_x, stage_y>;
     static_assert(chosen::valid || (stage_x && stage_y),
-                  "ctga: an expression node is too large even when staged: more blade pairs than expr::term_budget "
-                  "(a product of two general multivectors of 128 blades or more) or monomials beyond expr::max_degree");
+                  "ctga: an expression node is too large to unroll even when staged: more blade pairs than "
+                  "expr::term_budget or monomials beyond expr::max_degree; evaluate it looped (ctga::looped(x)) "
+                  "instead of ctga::unrolled(x)");
 
     static constexpr bool complete = true;
     static constexpr auto terms = chosen::terms;

@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 
 #include "ctga/algebra/multivector.hpp"
 #include "ctga/expr/expression.hpp"
@@ -31,6 +32,20 @@ template <multivector_type Target, operand X>
 [[nodiscard]] constexpr Target project(const X& x) noexcept {
     const auto e = expr::as_expression(x);
     return Target(detail::from_components_t{}, e.template evaluate<typename Target::scalar_type, Target::layout>());
+}
+
+// Unrolled or looped, by choice. The engine unrolls a product into straight-line code up to
+// expr::loop_threshold surviving blade pairs and loops over a table of them past it
+// (expr/looped.hpp); these force either for every product of x:
+//   auto p = ctga::looped(a * b);     // one loop, cheap to compile, for a large product
+//   auto q = ctga::unrolled(a * b);   // straight-line code (up to expr::term_budget pairs)
+template <operand X>
+[[nodiscard]] constexpr auto looped(X&& x) noexcept {
+    return expr::in_mode<expr::product_mode::looped>(std::forward<X>(x));
+}
+template <operand X>
+[[nodiscard]] constexpr auto unrolled(X&& x) noexcept {
+    return expr::in_mode<expr::product_mode::unrolled>(std::forward<X>(x));
 }
 
 // The coefficient of a blade named as written, computing that component only.

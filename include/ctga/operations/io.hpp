@@ -1,6 +1,15 @@
-// Printing with blade names: 3*a2a3 + 2*e1e. A component stored with the opposite orientation
-// (a screw's e3e1) is printed under a name of that orientation: for grade ≥ 2 the first two
-// generators of the canonical name are swapped (e1e3 → e3e1), which spells −e1e3.
+// Printing with blade names: a2a3 + 0.3*a3a - 2*e1e. A coefficient of 1 or −1 is written as
+// its sign alone (the scalar keeps its number: 1, -1); a zero multivector is written 0; a scalar
+// type that is not arithmetic is written (c)*name.
+//
+// Orientation: a layout keeps each blade's mask and sign, not the word it was declared with
+// (declarations that differ only in the word are one type), so the word is chosen by a rule. A
+// blade stored with sign −1 and grade ≥ 2 is written as its canonical name with the last two
+// generators swapped: e1e3 → e3e1 (a screw), e0e2e3 → e0e3e2, e0e1e3 → e0e3e1, e0e1e2 → e0e2e1
+// (a Cl(3,0,1) point). The rule is the same at grade ≥ 4; at every grade it reproduces exactly
+// the declarations that are the canonical name with its last two generators swapped: a2ae3e1
+// prints as declared, ee1e2e3 prints e1e2ee3, a3a1e2e prints a1a3ee2. A blade stored with
+// sign +1 prints its canonical name, however it was declared (a3a1e3e1 prints a1a3e1e3).
 #pragma once
 
 #include <cstddef>
@@ -23,23 +32,27 @@ std::ostream& operator<<(std::ostream& os, const multivector<Alg, T, L>& x) {
         if constexpr (std::is_arithmetic_v<T>) {
             if (c == T{}) continue;
             const bool negative = c < T{};
-            os << (first ? (negative ? "-" : "") : (negative ? " - " : " + ")) << (negative ? -c : c);
+            const T a = negative ? -c : c;
+            os << (first ? (negative ? "-" : "") : (negative ? " - " : " + "));
+            first = false;
+            if (m == 0) { os << a; continue; }  // the scalar: its number alone
+            if (a != T(1)) os << a << '*';
         } else {
             os << (first ? "" : " + ") << '(' << c << ')';
+            first = false;
+            if (m == 0) continue;
+            os << '*';
         }
-        first = false;
-        if (m == 0) continue;  // the scalar: its coefficient alone
-        os << '*';
         if (!swapped) {
             Alg::write_blade_name(m, [&](char ch) { os << ch; });
         } else {
-            // write generator 2, then generator 1, then the rest
-            std::size_t g1 = Alg::dimension, g2 = Alg::dimension;
+            // the canonical name with its last two generators g1 < g2 written as g2 g1
+            std::size_t g1 = 0, g2 = 0;
             for (std::size_t g = 0; g < Alg::dimension; ++g)
-                if (m >> g & 1u) { if (g1 == Alg::dimension) g1 = g; else if (g2 == Alg::dimension) g2 = g; }
-            os << Alg::generator_name(g2) << Alg::generator_name(g1);
-            for (std::size_t g = g2 + 1; g < Alg::dimension; ++g)
+                if (m >> g & 1u) { g1 = g2; g2 = g; }
+            for (std::size_t g = 0; g < g1; ++g)
                 if (m >> g & 1u) os << Alg::generator_name(g);
+            os << Alg::generator_name(g2) << Alg::generator_name(g1);
         }
     }
     if (first) os << '0';

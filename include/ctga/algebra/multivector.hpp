@@ -72,7 +72,10 @@ template <char... Name>
 struct target_type_lacks_blade {
     static_assert(sizeof...(Name) == 0,
                   "ctga: the target multivector type lacks a blade the source can make non-zero "
-                  "(named in target_type_lacks_blade<...>); add it to the type or drop it with ctga::project");
+                  "(named in target_type_lacks_blade<...>). If an operand appears twice, as R in "
+                  "R * x * reverse(R), each appearance is a leaf of its own and the terms that cancel "
+                  "between them are not seen: use ctga::sandwich(R, x) or write it as a ctga::formula. "
+                  "Otherwise add the blade to the type, or drop it on purpose with ctga::project");
 };
 
 template <fixed_string Name, std::size_t... I>

@@ -16,6 +16,7 @@
 
 #include "ctga/expr/expression.hpp"
 #include "ctga/operations/evaluate.hpp"
+#include "ctga/operations/operators.hpp"
 #include "ctga/support/inline.hpp"
 
 namespace ctga {
@@ -157,6 +158,13 @@ template <class F>
 [[nodiscard]] constexpr formula_t<F> formula(F f) noexcept {
     return {f};
 }
+
+// The sandwich R x R̃: a rotor, translator or motor R (R R̃ = 1) of any algebra acting on x, as
+// klein's R(x). One formula, so R is one argument and what cancels between its two appearances
+// is found: in Cl(3,0,1) a rotor sandwiching a point gives a point (the grade-1 terms of
+// R p R̃ cancel), where R * p * reverse(R), with R as two independent leaves, cannot show it.
+//   point q = ctga::sandwich(R, p);
+inline constexpr auto sandwich = formula([](auto r, auto x) { return r * x * ~r; });
 
 // An operation: a formula with a typed call, so that each of the paper's operations is written
 // once and is both the composable formula and the function that returns a value.

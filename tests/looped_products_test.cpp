@@ -1,0 +1,176 @@
+// Products past the unrolling threshold (expr/looped.hpp): every bilinear rule's row form
+// against the rule itself for every pair of blades; looped products of general multivectors in
+// Cl(0,6,2), Cl(3,0,1) and a 10-generator algebra against the naive dense reference; forced
+// unrolled and looped evaluation of the same expression; looped products inside larger
+// expressions, projected, and in formulas.
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstddef>
+#include <random>
+#include <string>
+
+#include "support/properties.hpp"
+
+namespace {
+
+using namespace ctga::test;
+namespace dense = ctga::dense;
+namespace hana = boost::hana;
+using ctga::blade_mask;
+
+using cl301 = ctga::algebra<"e0 e1 e2 e3", 0, 1, 1, 1>;
+// 10 generators of every kind of square (the degenerate ones last, as in Cl(0,6,2))
+using ten = ctga::algebra<"e1 e2 e3 e4 e5 e6 e7 e8 e9 e10", 1, 1, 1, -1, -1, -1, -1, 1, 0, 0>;
+
+// Every blade of Alg whose grade passes Keep, canonical, ordered by mask.
+template <class Alg, bool EvenOnly>
+constexpr auto blades() {
+    constexpr std::size_t n = EvenOnly ? Alg::blade_count / 2 : Alg::blade_count;
+    ctga::layout<n> l;
+    std::size_t k = 0;
+    for (blade_mask m = 0; m < Alg::blade_count; ++m)
+        if (!EvenOnly || ctga::blade_grade(m) % 2 == 0) {
+            l.masks[k] = m;
+            l.signs[k++] = 1;
+        }
+    return l;
+}
+template <class Alg>
+using general = ctga::multivector<Alg, double, blades<Alg, false>()>;
+template <class Alg>
+using even = ctga::multivector<Alg, double, blades<Alg, true>()>;
+
+// The dense value restricted to the blades of layout L (a projection, as ctga::project).
+template <class Alg, auto L>
+dense::multivector<Alg, double> keep_only(const dense::multivector<Alg, double>& d) {
+    dense::multivector<Alg, double> out;
+    for (blade_mask m : L.masks) out[m] = d[m];
+    return out;
+}
+
+template <class E>
+constexpr bool is_looped = ctga::expr::is_looped_node<typename std::remove_cvref_t<E>::node_type>;
+
+// ---- the row forms ----------------------------------------------------------------------------
+
+template <class Rule, class Alg>
+int row_form_mismatches() {
+    int bad = 0;
+    for (blade_mask a = 0; a < Alg::blade_count; ++a) {
+        const ctga::rules::row_form f = Rule::row(a);
+        for (blade_mask b = 0; b < Alg::blade_count; ++b) {
+            const ctga::signed_blade p = Rule::apply(a, b);
+            const bool alive = (b & f.care) == f.want;
+            if (alive != (p.sign != 0)) { ++bad; continue; }
+            if (!alive) continue;
+            const int sign = f.sign * ((std::popcount(b & f.parity) & 1) ? -1 : 1);
+            bad += sign != p.sign || (a ^ b ^ f.flip) != p.mask;
+        }
+    }
+    return bad;
+}
+
+template <class Alg>
+void check_row_forms() {
+    using namespace ctga::rules;
+    CHECK(row_form_mismatches<geometric<Alg>, Alg>() == 0);
+    CHECK(row_form_mismatches<exterior<Alg>, Alg>() == 0);
+    CHECK(row_form_mismatches<regressive<Alg>, Alg>() == 0);
+    CHECK(row_form_mismatches<left_contraction<Alg>, Alg>() == 0);
+    CHECK(row_form_mismatches<right_contraction<Alg>, Alg>() == 0);
+    CHECK(row_form_mismatches<scalar<Alg>, Alg>() == 0);
+}
+
+TEST_CASE("every rule's row form equals the rule for every pair of blades", "[looped]") {
+    check_row_forms<ctga::cl062>();
+    check_row_forms<cl301>();
+    check_row_forms<ctga::algebra<"e1 e2 e3 e4", -1, 1, 1, 1>>();
+    check_row_forms<ten>();
+}
+
+// ---- looped products against the dense reference ----------------------------------------------
+
+// Each bilinear rule of X and Y: looped (by the engine's choice or forced), against dense.
+template <class X, class Y, class Rng>
+void check_all_products(const std::string& where, Rng& rng) {
+    const auto x = random_fill<X>(rng);
+    const auto y = random_fill<Y>(rng);
+    hana::for_each(bilinear_ops, [&](const auto& op) {
+        const std::string name = where + ", " + hana::to<const char*>(op[hana::size_c<0>]);
+        const auto sparse = ctga::eval(ctga::looped(op[hana::size_c<1>](x, y)));
+        check_close(name, sparse, op[hana::size_c<2>](as_dense(x), as_dense(y)));
+    });
+}
+
+TEST_CASE("Cl(0,6,2): the full 256 x 256 products are looped and equal the dense reference", "[looped][cl062]") {
+    std::mt19937_64 rng(62);
+    using full = general<ctga::cl062>;
+    static_assert(is_looped<decltype(full{} * full{})>, "past the threshold the engine loops");
+    static_assert(decltype(full{} * full{})::size() == 256);
+    // 7 pairs in 16 die to e0² = e² = 0: 256 · 256 · 9/16 multiplications
+    static_assert(ctga::cost_of<decltype(full{} * full{})>.mul == 36864);
+    check_all_products<full, full>("Cl(0,6,2) general", rng);
+    // random blade orders and orientations on both sides
+    check_all_products<random_mv<ctga::cl062, 3, 256>, random_mv<ctga::cl062, 4, 256>>("Cl(0,6,2) shuffled", rng);
+    check_all_products<even<ctga::cl062>, random_mv<ctga::cl062, 5, 40>>("Cl(0,6,2) even x 40 blades", rng);
+}
+
+TEST_CASE("Cl(3,0,1): forcing looped or unrolled gives the same products", "[looped][cl301]") {
+    std::mt19937_64 rng(301);
+    using full = general<cl301>;
+    static_assert(!is_looped<decltype(full{} * full{})>, "192 pairs: unrolled by default");
+    const auto a = random_fill<full>(rng);
+    const auto b = random_fill<random_mv<cl301, 7, 11>>(rng);
+    static_assert(is_looped<decltype(ctga::looped(a * b))>);
+    check_all_products<full, random_mv<cl301, 7, 11>>("Cl(3,0,1)", rng);
+    check_close("Cl(3,0,1) looped against unrolled", ctga::looped(a * b), ctga::unrolled(a * b));
+    check_close("Cl(3,0,1) looped against unrolled, ∨", ctga::looped(a & b), ctga::unrolled(a & b));
+}
+
+TEST_CASE("10 generators: 512 x 512 even and 1024 x 1024 general products equal the dense reference",
+          "[looped][ten]") {
+    std::mt19937_64 rng(10);
+    const auto a = random_fill<even<ten>>(rng);
+    const auto b = random_fill<even<ten>>(rng);
+    static_assert(is_looped<decltype(a * b)> && decltype(a * b)::size() == 512);
+    check_close("even * even", a * b, dense::gp(as_dense(a), as_dense(b)));
+    check_close("even ∧ even", a ^ b, dense::wedge(as_dense(a), as_dense(b)));
+    const auto x = random_fill<general<ten>>(rng);
+    const auto y = random_fill<general<ten>>(rng);
+    check_close("general * general", x * y, dense::gp(as_dense(x), as_dense(y)));
+    check_close("general ∨ general", x & y, dense::vee(as_dense(x), as_dense(y)));
+    check_close("general ⌋ general", x | y, dense::lcont(as_dense(x), as_dense(y)));
+}
+
+// ---- looped products inside expressions -----------------------------------------------------------
+
+TEST_CASE("looped products compose: operands that are expressions, sums, projections, formulas",
+          "[looped][engine]") {
+    std::mt19937_64 rng(7);
+    using full = general<ctga::cl062>;
+    const auto a = random_fill<full>(rng);
+    const auto b = random_fill<full>(rng);
+    const auto c = random_fill<random_mv<ctga::cl062, 9, 100>>(rng);
+    const auto s = random_fill<grade_mv<ctga::cl062, 2>>(rng);
+    const auto da = as_dense(a), db = as_dense(b), dc = as_dense(c), ds = as_dense(s);
+
+    // a looped product of looped products, and of sums
+    check_close("(a b)(b a)", (a * b) * (b * a), dense::gp(dense::gp(da, db), dense::gp(db, da)));
+    check_close("(a + c)(b - c)", (a + c) * (b - c), dense::gp(da + dc, db - dc));
+    // a looped product inside an unrolled expression
+    check_close("½ (a b) + s", ctga::half * (a * b) + s, dense::gp(da, db) * 0.5 + ds);
+    check_close("s ∧ (a b)", s ^ (a * b), dense::wedge(ds, dense::gp(da, db)));
+    // fewer blades, in other orientations, than the product makes
+    using target = random_mv<ctga::cl062, 11, 30>;
+    const target p = ctga::project<target>(a * b);
+    check_close("project(a b)", p, keep_only<ctga::cl062, target::layout>(dense::gp(da, db)));
+    constexpr auto e3e1 = ctga::cl062::parse_blade("e3e1");  // orientation −1 against e1e3
+    const double expected = e3e1.sign * dense::gp(da, db)[e3e1.mask];
+    CHECK(std::abs(ctga::get<"e3e1">(a * b) - expected) <= tolerance * dense::max_abs(dense::gp(da, db)));
+    // in a formula, with a repeated argument
+    constexpr auto square = ctga::formula([](auto x) { return x * x; });
+    check_close("formula x x", square(a), dense::gp(da, da));
+}
+
+}  // namespace

@@ -116,33 +116,6 @@ TEST_CASE("Cl(0,6,2): the full 256 x 256 products are looped and equal the dense
     check_all_products<even<ctga::cl062>, random_mv<ctga::cl062, 5, 40>>("Cl(0,6,2) even x 40 blades", rng);
 }
 
-TEST_CASE("Cl(3,0,1): forcing looped or unrolled gives the same products", "[looped][cl301]") {
-    std::mt19937_64 rng(301);
-    using full = general<cl301>;
-    static_assert(!is_looped<decltype(full{} * full{})>, "192 pairs: unrolled by default");
-    const auto a = random_fill<full>(rng);
-    const auto b = random_fill<random_mv<cl301, 7, 11>>(rng);
-    static_assert(is_looped<decltype(ctga::looped(a * b))>);
-    check_all_products<full, random_mv<cl301, 7, 11>>("Cl(3,0,1)", rng);
-    check_close("Cl(3,0,1) looped against unrolled", ctga::looped(a * b), ctga::unrolled(a * b));
-    check_close("Cl(3,0,1) looped against unrolled, ∨", ctga::looped(a & b), ctga::unrolled(a & b));
-}
-
-TEST_CASE("10 generators: 512 x 512 even and 1024 x 1024 general products equal the dense reference",
-          "[looped][ten]") {
-    std::mt19937_64 rng(10);
-    const auto a = random_fill<even<ten>>(rng);
-    const auto b = random_fill<even<ten>>(rng);
-    static_assert(is_looped<decltype(a * b)> && decltype(a * b)::size() == 512);
-    check_close("even * even", a * b, dense::gp(as_dense(a), as_dense(b)));
-    check_close("even ∧ even", a ^ b, dense::wedge(as_dense(a), as_dense(b)));
-    const auto x = random_fill<general<ten>>(rng);
-    const auto y = random_fill<general<ten>>(rng);
-    check_close("general * general", x * y, dense::gp(as_dense(x), as_dense(y)));
-    check_close("general ∨ general", x & y, dense::vee(as_dense(x), as_dense(y)));
-    check_close("general ⌋ general", x | y, dense::lcont(as_dense(x), as_dense(y)));
-}
-
 // ---- looped products inside expressions -----------------------------------------------------------
 
 TEST_CASE("looped products compose: operands that are expressions, sums, projections, formulas",

@@ -5,7 +5,8 @@
 #                                     by a motor_map, acceleration, body_frame_rates)
 #   (c) the heaviest test unit         only with --with-heaviest (1.5 to 5 minutes)
 #   (d) bench/compile/generators.cpp   one algebra of n generators and one geometric product of
-#                                     two general vectors, bivectors and even elements, n = 3..10
+#                                     two general vectors, bivectors, even elements and general
+#                                     multivectors, n = 3..10 (past the loop threshold: looped)
 # one compile at a time, each with the compiler and flags of the configured build (the compile
 # command of an example in $BUILD_DIR/compile_commands.json, default build/), the object going
 # to /dev/null. Writes the Markdown tables to $BUILD_DIR/bench/compile_cost.md, the data to
@@ -124,10 +125,10 @@ if ((with_heaviest)); then
 fi
 
 # ---- (d) n generators --------------------------------------------------------------------
-kinds=(vectors bivectors even)
+kinds=(vectors bivectors even general)
 echo "compile-cost: one product against the number of generators" >&2
 printf 'kind\tn\toperand_blades\tpairs\tresult_blades\tmul\tadd\twall\tcpu\trss\tstatus\tload\tnote\n' > "$tsv"
-for p in 1 2 3; do
+for p in 1 2 3 4; do
     kind=${kinds[p - 1]}
     for ((n = nmin; n <= nmax; ++n)); do
         printf '  %-9s n=%-2d … ' "$kind" "$n" >&2
@@ -149,6 +150,7 @@ for p in 1 2 3; do
                 1) ob=$n ;;
                 2) ob=$((n * (n - 1) / 2)) ;;
                 3) ob=$((1 << (n - 1))) ;;
+                4) ob=$((1 << n)) ;;
             esac
         fi
         printf '%ss %sMB %s\n' "$m_wall" "$m_rss" "$m_status" >&2
@@ -184,9 +186,11 @@ std_flags=$(grep -oE -- '-(O[0-9s]|std=[^ ]+|DNDEBUG)' <<<"$flags" | paste -sd' 
     echo "general operands, evaluated at run time (\`bench/compile/generators.cpp\`, \`-DCTGA_N=n\`)."
     echo "ctga has no global product tables: the blade pairs, signs and the program are computed at"
     echo "compile time for each product's operand types, so each row is the cost of declaring the"
-    echo "algebra and compiling that one product. *pairs*: blade pairs the engine multiplies out"
-    echo "(operand blades squared); *result*: blades of the result type; *cost_of*: multiplications"
-    echo "and additions of the generated code."
+    echo "algebra and compiling that one product. *pairs*: operand blades squared; past"
+    echo "\`expr::loop_threshold\` surviving pairs (1,024) the product is looped (a loop over per-row bit"
+    echo "sets of the surviving pairs) instead of unrolled; *result*: blades of the result type;"
+    echo "*cost_of*: multiplications and additions of the generated code (looped: one of each per"
+    echo "surviving pair)."
     echo
     echo "| operands | n | operand blades | pairs | result blades | cost_of | wall s | cpu s | peak MB | load |"
     echo "| --- | ---: | ---: | ---: | ---: | --- | ---: | ---: | ---: | ---: |"

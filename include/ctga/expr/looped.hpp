@@ -245,16 +245,24 @@ struct pair_rows {
 // Row by row: x_i once, then each surviving y_j times it added to (or subtracted from) its
 // output blade's accumulator. Within a row every pair has its own output blade (a ^ b is one to
 // one in b), so the additions of a row do not wait on each other.
-template <class T, std::size_t Words>
+template <class T, std::size_t Words, bool Subtract, bool Identity>
 CTGA_ALWAYS_INLINE constexpr void run_set(const std::uint64_t* set, blade_mask lead, const blade_mask* ym, T xi,
-                                          const T* y, T* acc, bool subtract) noexcept {
+                                          const T* y, T* acc) noexcept {
     for (std::size_t w = 0; w < Words; ++w)
         for (std::uint64_t bits = set[w]; bits != 0; bits &= bits - 1) {
             const std::size_t j = w * 64 + static_cast<std::size_t>(std::countr_zero(bits));
-            T& a = acc[lead ^ ym[j]];
-            a = subtract ? a - xi * y[j] : a + xi * y[j];
+            T& a = acc[lead ^ (Identity ? static_cast<blade_mask>(j) : ym[j])];
+            if constexpr (Subtract) a -= xi * y[j];
+            else a += xi * y[j];
         }
 }
+
+template <auto L>
+inline constexpr bool identity_layout = [] {
+    for (std::size_t j = 0; j < L.size(); ++j)
+        if (L.masks[j] != j) return false;
+    return true;
+}();
 
 // x ∘ y into output layout OL (any blades, in any orientation: a target type's).
 template <class T, class Rows, auto LY, auto OL>
@@ -263,8 +271,9 @@ constexpr std::array<T, OL.size()> run_rows(const T* x, const T* y) noexcept {
     constexpr std::size_t W = Rows::column_words;
     const auto& d = Rows::value;
     for (std::size_t r = 0; r < Rows::rows; ++r) {
-        run_set<T, W>(d.add.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc.data(), false);
-        run_set<T, W>(d.subtract.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc.data(), true);
+        constexpr bool identity = identity_layout<LY>;  // column j is blade j: no lookup
+        run_set<T, W, false, identity>(d.add.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc.data());
+        run_set<T, W, true, identity>(d.subtract.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc.data());
     }
     std::array<T, OL.size()> out{};
     for (std::size_t k = 0; k < OL.size(); ++k)

@@ -69,13 +69,19 @@ constexpr std::size_t surviving_pairs(std::size_t limit) {
 // Looped when more than loop_threshold pairs survive, or when the operands' blades make more
 // pairs than the symbolic engine multiplies out at all (expr::term_budget; the scalar product
 // of two general multivectors keeps few of them).
+// (The operands' normal forms, which the product needs anyway, bound their blades: the common
+// case is decided without computing their layouts, which can take a full expansion.)
 template <class Rule, class X, class Y>
 constexpr bool worth_looping() {
-    constexpr auto& lx = node_layout<X>;
-    constexpr auto& ly = node_layout<Y>;
-    if constexpr (lx.size() * ly.size() <= loop_threshold) return false;
-    else if constexpr (lx.size() * ly.size() > term_budget) return true;
-    else return surviving_pairs<Rule, lx, ly>(loop_threshold) > loop_threshold;
+    if constexpr (traits<X>::terms.size() * traits<Y>::terms.size() <= loop_threshold) {
+        return false;
+    } else {
+        constexpr auto& lx = node_layout<X>;
+        constexpr auto& ly = node_layout<Y>;
+        if constexpr (lx.size() * ly.size() <= loop_threshold) return false;
+        else if constexpr (lx.size() * ly.size() > term_budget) return true;
+        else return surviving_pairs<Rule, lx, ly>(loop_threshold) > loop_threshold;
+    }
 }
 
 // The node a bilinear product of X and Y becomes.

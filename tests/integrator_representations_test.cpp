@@ -144,8 +144,12 @@ struct random_inputs {
     }
     motor<T> pose() {
         const auto a = unit();
-        return motor<T>(rigid_motion(translation(T(2) * uniform(), T(2) * uniform(), T(2) * uniform()),
-                                     rotation(a[0], a[1], a[2], T(3) * uniform())));
+        // Drawn one by one: the order in which a call's arguments are evaluated is unspecified
+        // (g++ goes right to left, clang++ left to right), and both compilers must see the same
+        // inputs. This is the order g++ drew them in as arguments, so its inputs are unchanged.
+        const T angle = T(3) * uniform();
+        const T tz = T(2) * uniform(), ty = T(2) * uniform(), tx = T(2) * uniform();
+        return motor<T>(rigid_motion(translation(tx, ty, tz), rotation(a[0], a[1], a[2], angle)));
     }
     screw<T> twist() { return screw<T>{uniform(), uniform(), uniform(), uniform(), uniform(), uniform()}; }
     coscrew<T> cotwist() { return coscrew<T>{uniform(), uniform(), uniform(), uniform(), uniform(), uniform()}; }

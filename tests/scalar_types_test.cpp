@@ -4,15 +4,6 @@
 #include <ostream>
 #include <random>
 
-// Clang 14 at -O2/-O3: expr/run.hpp's term_magnitude asks for `#pragma clang loop unroll(full)`,
-// and inlined into run_looped (a program of more than inline_terms terms, its degrees not
-// constants) with the dual type below it cannot be unrolled: "loop not unrolled"
-// [-Wpass-failed=transform-warning], an error under -Werror. Off for this file until the engine
-// stops asking for the unroll there.
-#if defined(__clang__)
-#pragma clang diagnostic ignored "-Wpass-failed"
-#endif
-
 #include <ctga/ctga.hpp>
 #include <ctga/reference/dense.hpp>
 

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <random>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include <boost/hana.hpp>
@@ -268,35 +269,58 @@ void check_grades_of_blade_products(Rng& rng) {
     CHECK(outside <= tolerance * (scale > 0 ? scale : 1.0));
 }
 
-// The whole suite for one algebra over a list of shapes (multivector types):
-// every pair against the dense reference, every shape through every linear map, the laws on
-// cyclic triples, and the grades of products of blades.
-template <class Alg, class... Shapes>
-void run_suite(std::uint64_t seed, int trials = 3) {
-    std::mt19937_64 rng(seed);
-    constexpr auto shapes = hana::tuple_t<Shapes...>;
-    for (int t = 0; t < trials; ++t) {
-        hana::for_each(shapes, [&](auto tx) {
-            using X = typename decltype(tx)::type;
-            const auto x = random_fill<X>(rng);
-            check_linear_maps_against_dense<Alg>(x);
-            hana::for_each(shapes, [&](auto ty) {
-                using Y = typename decltype(ty)::type;
-                const auto y = random_fill<Y>(rng);
-                check_products_against_dense(x, y);
-            });
-        });
-        // Lounesto's formula, grade by grade, on the first shape (the widest)
-        using first = typename decltype(+shapes[hana::size_c<0>])::type;
-        if constexpr (non_degenerate<Alg>())
-            check_pseudoscalar_formula<Alg>(random_fill<first>(rng), random_fill<first>(rng));
-        constexpr std::size_t n = sizeof...(Shapes);
-        [&]<std::size_t... I>(std::index_sequence<I...>) {
-            (check_laws<Alg>(random_fill<typename decltype(+shapes[hana::size_c<I>])::type>(rng),
-                             random_fill<typename decltype(+shapes[hana::size_c<(I + 1) % n>])::type>(rng),
-                             random_fill<typename decltype(+shapes[hana::size_c<(I + 2) % n>])::type>(rng)),
-             ...);
-        }(std::make_index_sequence<n>{});
+// ---- the suite, in parts ------------------------------------------------------------------
+//
+// A test file whose header says `// PARTS: K` is compiled as K translation units (see
+// tests/CMakeLists.txt), each defining CTGA_TEST_PART (0 … K−1) and CTGA_TEST_PARTS; part k
+// instantiates work items k, k + K, k + 2K, … of the suite, so that no translation unit holds
+// the whole algebra's instantiations (compile time and memory per unit are what a CI runner and
+// a user's editor feel). A file without the header is one part.
+#ifndef CTGA_TEST_PART
+#define CTGA_TEST_PART 0
+#define CTGA_TEST_PARTS 1
+#define CTGA_TEST_PART_NAME ""
+#endif
+
+struct suite_part {
+    std::size_t index, count;
+    [[nodiscard]] constexpr bool holds(std::size_t item) const { return item % count == index; }
+};
+inline constexpr suite_part this_part{CTGA_TEST_PART, CTGA_TEST_PARTS};
+static_assert(this_part.index < this_part.count, "CTGA_TEST_PART must be below CTGA_TEST_PARTS");
+
+// The work items of the suite over n shapes, most expensive first so that parts get a share of
+// each kind: the laws on the n cyclic triples, every ordered pair of shapes against the dense
+// reference, every shape through every linear map, Lounesto's formula on the first shape (the
+// widest), the grades of products of blades.
+template <std::size_t N>
+struct suite_items {
+    static constexpr std::size_t laws = 0, products = laws + N, maps = products + N * N, pseudoscalar = maps + N,
+                                 grades = pseudoscalar + 1, count = grades + 1;
+};
+
+template <class Alg, std::size_t Item, class... Shapes, class Rng>
+void run_suite_item(Rng& rng) {
+    constexpr std::size_t n = sizeof...(Shapes);
+    using items = suite_items<n>;
+    using shapes = std::tuple<Shapes...>;
+    if constexpr (!this_part.holds(Item)) {
+        return;
+    } else if constexpr (Item < items::products) {
+        constexpr std::size_t i = Item - items::laws;
+        check_laws<Alg>(random_fill<std::tuple_element_t<i, shapes>>(rng),
+                        random_fill<std::tuple_element_t<(i + 1) % n, shapes>>(rng),
+                        random_fill<std::tuple_element_t<(i + 2) % n, shapes>>(rng));
+    } else if constexpr (Item < items::maps) {
+        constexpr std::size_t pair = Item - items::products;
+        check_products_against_dense(random_fill<std::tuple_element_t<pair / n, shapes>>(rng),
+                                     random_fill<std::tuple_element_t<pair % n, shapes>>(rng));
+    } else if constexpr (Item < items::pseudoscalar) {
+        check_linear_maps_against_dense<Alg>(random_fill<std::tuple_element_t<Item - items::maps, shapes>>(rng));
+    } else if constexpr (Item == items::pseudoscalar) {
+        using first = std::tuple_element_t<0, shapes>;
+        if constexpr (non_degenerate<Alg>()) check_pseudoscalar_formula<Alg>(random_fill<first>(rng), random_fill<first>(rng));
+    } else {
         // blades of grade up to 3 (up to 2 past 8 generators, where two generic 3-blades already
         // make 14,400 blade pairs)
         constexpr int top = Alg::dimension < 3 ? static_cast<int>(Alg::dimension) : Alg::dimension > 8 ? 2 : 3;
@@ -308,6 +332,17 @@ void run_suite(std::uint64_t seed, int trials = 3) {
             }.template operator()<R>(), ...);
         }(std::make_integer_sequence<int, top>{});
     }
+}
+
+// The suite for one algebra over a list of shapes (multivector types), this part's items of it,
+// `trials` times on fresh random inputs (each part draws its own).
+template <class Alg, class... Shapes>
+void run_suite(std::uint64_t seed, int trials = 3) {
+    std::mt19937_64 rng(seed + 7919 * this_part.index);
+    for (int t = 0; t < trials; ++t)
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (run_suite_item<Alg, I, Shapes...>(rng), ...);
+        }(std::make_index_sequence<suite_items<sizeof...(Shapes)>::count>{});
 }
 
 // The shapes used in algebras of up to 5 generators: every blade at once, the vectors, the

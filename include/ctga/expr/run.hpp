@@ -66,46 +66,101 @@ CTGA_ALWAYS_INLINE constexpr T term_magnitude(const op_term& o, const T* const* 
     return v;
 }
 
-// The signed sum of terms I ∈ [B, E) of assignment A of program P (negated when Negate), as a
-// balanced tree: the compiler may not reassociate floating-point additions, and one left-to-right
-// chain over the thirty terms of a kinetic energy is a chain of thirty dependent additions. Term
-// I is the assignment's term (I + R) mod n: the rotation R puts a positive term first when there
-// is one, so that a − b is computed as a − b and not as −b + a. A half whose first term is
-// negative is subtracted with its signs flipped, so no other negation is ever needed.
-template <class P, std::size_t A>
-struct assignment_terms {
-    static constexpr std::uint32_t begin = P::offsets[A];
-    static constexpr std::uint32_t n = P::offsets[A + 1] - begin;
-    static constexpr std::uint32_t rotation = [] {
-        for (std::uint32_t i = 0; i < n; ++i)
-            if (P::terms[begin + i].c.num > 0) return i;
-        return std::uint32_t{0};
-    }();
-    static constexpr const op_term& at(std::uint32_t i) noexcept { return P::terms[begin + (i + rotation) % n]; }
+// The straight-line form of a program: a list of steps, computed once per program at compile
+// time and run by one fold (run_steps below), so that a program of n terms costs the compiler
+// one function, not one template instance per term or per sum.
+//
+// Each assignment is the signed sum of its terms as a balanced tree: the compiler may not
+// reassociate floating-point additions, and one left-to-right chain over the thirty terms of a
+// kinetic energy is a chain of thirty dependent additions. Term i of an assignment of n terms
+// is its term (i + r) mod n: the rotation r puts a positive term first when there is one, so
+// that a − b is computed as a − b and not as −b + a. A half whose first term is negative is
+// subtracted with its signs flipped, so no other negation is ever needed. A sum starts from a
+// term, not from zero: x + 0.0 is not x for x = −0.0, so a zero start would cost an addition
+// the compiler may not remove.
+enum class step_kind : std::uint8_t {
+    term,     // r[reg] = ±|term|
+    combine,  // r[reg] = r[reg] ± r[other]
+    store,    // assignment `target` = r[reg] (zero when the assignment has no terms)
+};
+struct step {
+    step_kind kind{};
+    bool subtract = false;   // term: negate; combine: subtract
+    std::uint32_t reg = 0;
+    std::uint32_t other = 0;  // term: its index in P::terms; combine: the right operand's register; store: the assignment
+    bool empty = false;      // store: the assignment has no terms
 };
 
-template <class T, class P, std::size_t A, std::uint32_t B, std::uint32_t E, bool Negate>
-CTGA_ALWAYS_INLINE constexpr T range_sum(const T* const* leaves, const T* tmp) noexcept {
-    using terms = assignment_terms<P, A>;
-    if constexpr (E - B == 1) {
-        const T v = term_magnitude<T>(terms::at(B), leaves, tmp);
-        if constexpr ((terms::at(B).c.num < 0) != Negate) return T(-v);
-        else return v;
-    } else {
-        constexpr std::uint32_t M = B + (E - B) / 2;
-        const T left = range_sum<T, P, A, B, M, Negate>(leaves, tmp);
-        if constexpr ((terms::at(M).c.num < 0) != Negate) return left - range_sum<T, P, A, M, E, !Negate>(leaves, tmp);
-        else return left + range_sum<T, P, A, M, E, Negate>(leaves, tmp);
+template <class P>
+struct straight_line {
+    static constexpr std::size_t step_count = P::terms.size() > 0 ? 2 * P::terms.size() + P::assignment_count : P::assignment_count;
+    static constexpr std::size_t register_count = P::terms.size() > 0 ? P::terms.size() : 1;
+
+    struct plan {
+        std::array<step, (step_count > 0 ? step_count : 1)> steps{};
+        std::size_t count = 0;
+    };
+    // The tree over terms [b, e) of the assignment whose terms start at `begin`: its value ends
+    // in the register of its first term (each term has its own register: its index).
+    static constexpr void sum(plan& p, std::uint32_t begin, std::uint32_t n, std::uint32_t rotation, std::uint32_t b,
+                              std::uint32_t e, bool negate) {
+        auto at = [&](std::uint32_t i) { return begin + (i + rotation) % n; };
+        if (e - b == 1) {
+            p.steps[p.count++] = step{step_kind::term, (P::terms[at(b)].c.num < 0) != negate, at(b), at(b), false};
+            return;
+        }
+        const std::uint32_t m = b + (e - b) / 2;
+        const bool subtract = (P::terms[at(m)].c.num < 0) != negate;
+        sum(p, begin, n, rotation, b, m, negate);
+        sum(p, begin, n, rotation, m, e, subtract ? !negate : negate);
+        p.steps[p.count++] = step{step_kind::combine, subtract, at(b), at(m), false};
+    }
+    static constexpr plan steps_of = [] {
+        plan p;
+        for (std::uint32_t a = 0; a < P::assignment_count; ++a) {
+            const std::uint32_t begin = P::offsets[a], n = P::offsets[a + 1] - begin;
+            std::uint32_t rotation = 0;
+            while (rotation < n && P::terms[begin + rotation].c.num <= 0) ++rotation;
+            if (rotation == n) rotation = 0;
+            if (n > 0) sum(p, begin, n, rotation, 0, n, false);
+            p.steps[p.count++] = step{step_kind::store, false, n > 0 ? begin + rotation : 0, a, n == 0};
+        }
+        return p;
+    }();
+    static constexpr std::size_t count = steps_of.count;
+};
+
+template <class T, std::size_t Tmp, std::size_t N>
+CTGA_ALWAYS_INLINE constexpr void run_step(const step& s, const op_term* terms, T* r, T* tmp, std::array<T, N>& out,
+                                            const T* const* leaves) noexcept {
+    switch (s.kind) {
+    case step_kind::term: {
+        const T v = term_magnitude<T>(terms[s.other], leaves, tmp);
+        r[s.reg] = s.subtract ? T(-v) : v;
+        break;
+    }
+    case step_kind::combine: r[s.reg] = s.subtract ? r[s.reg] - r[s.other] : r[s.reg] + r[s.other]; break;
+    case step_kind::store: {
+        const T v = s.empty ? T{} : r[s.reg];
+        if constexpr (Tmp > 0)
+            if (s.other < Tmp) {
+                tmp[s.other] = v;
+                break;
+            }
+        out[s.other - Tmp] = v;
+        break;
+    }
     }
 }
 
-// Assignment A of program P: its terms summed (from a term, not from zero: x + 0.0 is not x for
-// x = −0.0, so a zero start would cost an addition the compiler may not remove).
-template <class T, class P, std::size_t A>
-CTGA_ALWAYS_INLINE constexpr T assignment(const T* const* leaves, const T* tmp) noexcept {
-    constexpr std::uint32_t n = assignment_terms<P, A>::n;
-    if constexpr (n == 0) return T{};
-    else return range_sum<T, P, A, 0, n, false>(leaves, tmp);
+template <class T, class P, std::size_t N, std::size_t... K>
+CTGA_ALWAYS_INLINE constexpr std::array<T, N> run_steps([[maybe_unused]] const T* const* leaves, std::index_sequence<K...>) noexcept {
+    using line = straight_line<P>;
+    [[maybe_unused]] std::array<T, line::register_count> r{};
+    [[maybe_unused]] std::array<T, (P::tmp_count > 0 ? P::tmp_count : 1)> tmp{};
+    std::array<T, N> out{};
+    (run_step<T, P::tmp_count, N>(line::steps_of.steps[K], P::terms.data(), r.data(), tmp.data(), out, leaves), ...);
+    return out;
 }
 
 #if defined(__GNUC__) && !defined(__clang__)
@@ -114,23 +169,9 @@ CTGA_ALWAYS_INLINE constexpr T assignment(const T* const* leaves, const T* tmp) 
 #undef CTGA_UNROLL_TERMS
 
 // Run program P on the leaves' storage: the temporaries in order, then the N outputs.
-template <class T, class P, std::size_t... A>
-CTGA_ALWAYS_INLINE constexpr void run_temporaries([[maybe_unused]] T* tmp, [[maybe_unused]] const T* const* leaves,
-                                                     std::index_sequence<A...>) noexcept {
-    ((tmp[A] = assignment<T, P, A>(leaves, tmp)), ...);
-}
-
-template <class T, class P, std::size_t N, std::size_t... R>
-CTGA_ALWAYS_INLINE constexpr std::array<T, N> run_outputs([[maybe_unused]] const T* tmp, [[maybe_unused]] const T* const* leaves,
-                                                              std::index_sequence<R...>) noexcept {
-    return std::array<T, N>{assignment<T, P, P::tmp_count + R>(leaves, tmp)...};
-}
-
 template <class T, class P, std::size_t N>
 CTGA_ALWAYS_INLINE constexpr std::array<T, N> run(const T* const* leaves) noexcept {
-    std::array<T, (P::tmp_count > 0 ? P::tmp_count : 1)> tmp{};
-    run_temporaries<T, P>(tmp.data(), leaves, std::make_index_sequence<P::tmp_count>{});
-    return run_outputs<T, P, N>(tmp.data(), leaves, std::make_index_sequence<N>{});
+    return run_steps<T, P, N>(leaves, std::make_index_sequence<straight_line<P>::count>{});
 }
 
 // Up to this many terms a program runs as the unrolled straight-line code above, inlined into
@@ -184,7 +225,7 @@ template <class U, auto TL, class Rule, class X, class Y>
 constexpr std::array<U, TL.size()> compute_looped(const U* const* leaves, looped<Rule, X, Y>*) noexcept {
     const auto x = operand_values<U, X>(leaves);
     const auto y = operand_values<U, Y>(leaves);
-    return run_rows<U, pair_rows<Rule, operand_layout<X>, operand_layout<Y>>, operand_layout<Y>, TL>(data_of(x), data_of(y));
+    return run_product<U, Rule, operand_layout<X>, operand_layout<Y>, TL>(data_of(x), data_of(y));
 }
 
 // The program of P, after its looped products: each computed once, then read as leaves

@@ -8,12 +8,12 @@
 // by the library are canonical: ordered by (grade, mask), every sign +1.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 
 #include "ctga/algebra/blade.hpp"
 #include "ctga/algebra/fixed_string.hpp"
+#include "ctga/support/sort.hpp"
 
 namespace ctga {
 
@@ -55,7 +55,7 @@ constexpr auto make_union() {
     for (blade_mask m : L1.masks) out.masks[n++] = m;
     for (blade_mask m : L2.masks)
         if (!L1.contains(m)) out.masks[n++] = m;
-    std::sort(out.masks.begin(), out.masks.end(), canonical_less);
+    merge_sort(out.masks.data(), out.masks.size(), canonical_less);
     for (auto& s : out.signs) s = 1;
     return out;
 }

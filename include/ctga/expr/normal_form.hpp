@@ -8,7 +8,6 @@
 // ½(s1 s2 − s2 s1) keeps 18 monomials of the 54 that the two products make.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +15,7 @@
 #include "ctga/algebra/blade.hpp"
 #include "ctga/algebra/layout.hpp"
 #include "ctga/expr/rational.hpp"
+#include "ctga/support/sort.hpp"
 
 namespace ctga::expr {
 
@@ -71,7 +71,7 @@ struct term_list {
 // Sort, merge equal monomials, drop zero coefficients.
 template <std::size_t Cap>
 constexpr void normalize(term_list<Cap>& l) {
-    std::sort(l.t.begin(), l.t.begin() + static_cast<std::ptrdiff_t>(l.n), term_less);
+    detail::merge_sort(l.t.data(), l.n, term_less);
     std::size_t w = 0;
     for (std::size_t r = 0; r < l.n;) {
         term acc = l.t[r++];
@@ -120,7 +120,9 @@ constexpr term_list<(NX * NY > 0 ? NX * NY : 1)> product_terms(const std::array<
             term m;
             m.out = p.mask;
             m.degree = a.degree + b.degree;
-            std::merge(a.f.begin(), a.f.begin() + a.degree, b.f.begin(), b.f.begin() + b.degree, m.f.begin());
+            // the monomial's factors stay sorted: merge the two sorted factor lists
+            for (std::uint32_t i = 0, j = 0, k = 0; k < m.degree; ++k)
+                m.f[k] = j == b.degree || (i < a.degree && !(b.f[j] < a.f[i])) ? a.f[i++] : b.f[j++];
             m.c = a.c * b.c * rational{p.sign, 1};
             l.push(m);
         }

@@ -8,18 +8,17 @@
 // then the target's components, each a sum of coefficient · monomial terms.
 #pragma once
 
-#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
 #include <tuple>
 #include <type_traits>
 #include <utility>
-#include <vector>
 
 #include "ctga/expr/looped.hpp"
 #include "ctga/expr/normal_form.hpp"
 #include "ctga/expr/staging.hpp"
+#include "ctga/support/sort.hpp"
 
 namespace ctga::expr {
 
@@ -74,8 +73,9 @@ struct flat_intermediates<type_list<Cs...>> {
     static constexpr std::array<term, (term_total > 0 ? term_total : 1)> terms = [] {
         std::array<term, (term_total > 0 ? term_total : 1)> a{};
         [[maybe_unused]] std::size_t k = 0;
-        ((std::copy(traits<Cs>::terms.begin(), traits<Cs>::terms.end(), a.begin() + static_cast<std::ptrdiff_t>(k)),
-          k += traits<Cs>::terms.size()),
+        ((void)[&](const auto& from) {
+             for (const term& t : from) a[k++] = t;
+         }(traits<Cs>::terms),
          ...);
         return a;
     }();
@@ -268,17 +268,22 @@ struct program {
         cost c = looped_prices(looped_list{});
         // 4. the price: additions per assignment; multiplications counting each distinct
         //    monomial prefix once (the same leaf product is computed once), plus coefficients
-        std::vector<std::uint64_t> prefixes;
+        std::size_t capacity = 1;
+        for (std::size_t x = 0; x < assignment_count; ++x)
+            for (std::uint32_t t = offsets[x]; t < offsets[x + 1]; ++t) capacity += terms[t].degree;
+        std::uint64_t* prefixes = new std::uint64_t[capacity];
+        std::size_t count = 0;
         for (std::size_t x = 0; x < assignment_count; ++x)
             for (std::uint32_t t = offsets[x]; t < offsets[x + 1]; ++t) {
                 const op_term& o = terms[t];
                 if (t > offsets[x]) ++c.add;
                 if (o.degree >= 1 && !is_unit(o.c)) ++c.mul;
                 std::uint64_t h = o.degree > 0 ? mix(0x7f, o.f[0]) : 0;
-                for (std::uint32_t len = 2; len <= o.degree; ++len) prefixes.push_back(h = mix(h, o.f[len - 1]));
+                for (std::uint32_t len = 2; len <= o.degree; ++len) prefixes[count++] = h = mix(h, o.f[len - 1]);
             }
-        std::sort(prefixes.begin(), prefixes.end());
-        c.mul += static_cast<std::size_t>(std::unique(prefixes.begin(), prefixes.end()) - prefixes.begin());
+        detail::merge_sort(prefixes, count, [](std::uint64_t a, std::uint64_t b) { return a < b; });
+        for (std::size_t i = 0; i < count; ++i) c.mul += i == 0 || prefixes[i] != prefixes[i - 1];
+        delete[] prefixes;
         return c;
     }();
 };

@@ -31,6 +31,8 @@ TEST_CASE("Cl(3,0,1): forcing looped or unrolled gives the same products", "[loo
     check_all_products<full, random_mv<cl301, 7, 11>>("Cl(3,0,1)", rng);
     check_close("Cl(3,0,1) looped against unrolled", ctga::looped(a * b), ctga::unrolled(a * b));
     check_close("Cl(3,0,1) looped against unrolled, ∨", ctga::looped(a & b), ctga::unrolled(a & b));
+    // four generators: one block, the block product is the low kernel alone
+    check_both_loops<full, random_mv<cl301, 7, 11>>("Cl(3,0,1)", rng);
 }
 
 TEST_CASE("10 generators: 512 x 512 even and 1024 x 1024 general products equal the dense reference",
@@ -39,10 +41,12 @@ TEST_CASE("10 generators: 512 x 512 even and 1024 x 1024 general products equal 
     const auto a = random_fill<even<ten>>(rng);
     const auto b = random_fill<even<ten>>(rng);
     static_assert(is_looped<decltype(a * b)> && decltype(a * b)::size() == 512);
+    static_assert(by_blocks<decltype(a * b)> && by_blocks<decltype(a ^ b)>, "even blocks: four kernels");
     check_close("even * even", a * b, dense::gp(as_dense(a), as_dense(b)));
     check_close("even ∧ even", a ^ b, dense::wedge(as_dense(a), as_dense(b)));
     const auto x = random_fill<general<ten>>(rng);
     const auto y = random_fill<general<ten>>(rng);
+    static_assert(by_blocks<decltype(x * y)> && by_blocks<decltype(x & y)> && by_blocks<decltype(x | y)>);
     check_close("general * general", x * y, dense::gp(as_dense(x), as_dense(y)));
     check_close("general ∨ general", x & y, dense::vee(as_dense(x), as_dense(y)));
     check_close("general ⌋ general", x | y, dense::lcont(as_dense(x), as_dense(y)));

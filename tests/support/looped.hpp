@@ -58,4 +58,61 @@ void check_all_products(const std::string& where, Rng& rng) {
     });
 }
 
+// Whether a looped product runs as a block product (expr::block_plan) or by the table loop.
+template <class Node>
+inline constexpr bool runs_by_blocks = false;
+template <class R, class X, class Y>
+inline constexpr bool runs_by_blocks<ctga::expr::looped<R, X, Y>> =
+    ctga::expr::block_plan<R, ctga::expr::operand_layout<X>, ctga::expr::operand_layout<Y>>::used;
+template <class E>
+constexpr bool by_blocks = runs_by_blocks<typename std::remove_cvref_t<E>::node_type>;
+
+// Each bilinear rule as a template of the algebra, with its dense counterpart.
+inline const auto bilinear_rules = hana::make_tuple(
+    hana::make_tuple(BOOST_HANA_STRING("geometric"), hana::template_<ctga::rules::geometric>,
+                     [](const auto& x, const auto& y) { return dense::gp(x, y); }),
+    hana::make_tuple(BOOST_HANA_STRING("exterior"), hana::template_<ctga::rules::exterior>,
+                     [](const auto& x, const auto& y) { return dense::wedge(x, y); }),
+    hana::make_tuple(BOOST_HANA_STRING("shuffle"), hana::template_<ctga::rules::regressive>,
+                     [](const auto& x, const auto& y) { return dense::vee(x, y); }),
+    hana::make_tuple(BOOST_HANA_STRING("left contraction"), hana::template_<ctga::rules::left_contraction>,
+                     [](const auto& x, const auto& y) { return dense::lcont(x, y); }),
+    hana::make_tuple(BOOST_HANA_STRING("right contraction"), hana::template_<ctga::rules::right_contraction>,
+                     [](const auto& x, const auto& y) { return dense::rcont(x, y); }),
+    hana::make_tuple(BOOST_HANA_STRING("scalar product"), hana::template_<ctga::rules::scalar>,
+                     [](const auto& x, const auto& y) { return dense::scalar_product(x, y); }));
+
+// The values of output layout OL as a dense multivector.
+template <class Alg, auto OL>
+dense::multivector<Alg, double> dense_of(const std::array<double, OL.size()>& v) {
+    dense::multivector<Alg, double> d;
+    for (std::size_t k = 0; k < OL.size(); ++k) d[OL.masks[k]] = OL.signs[k] * v[k];
+    return d;
+}
+
+// Both loops of every bilinear rule on X and Y, called directly whichever the engine would
+// choose: the block product (every rule splits over the generators) and the table loop, each
+// against dense.
+template <class X, class Y, class Rng>
+void check_both_loops(const std::string& where, Rng& rng) {
+    using Alg = typename X::algebra_type;
+    const auto x = random_fill<X>(rng);
+    const auto y = random_fill<Y>(rng);
+    const auto dx = as_dense(x), dy = as_dense(y);
+    hana::for_each(bilinear_rules, [&](const auto& r) {
+        using Rule = typename std::remove_cvref_t<decltype(r[hana::size_c<1>])>::template apply<Alg>::type;
+        using rows = ctga::expr::pair_rows<Rule, X::layout, Y::layout>;
+        using plan = ctga::expr::block_plan<Rule, X::layout, Y::layout>;
+        static_assert(plan::census.splits, "every bilinear rule splits over the generators");
+        constexpr auto OL = rows::outputs;
+        const std::string name = where + ", " + hana::to<const char*>(r[hana::size_c<0>]);
+        const auto expected = r[hana::size_c<2>](dx, dy);
+        check_close(name + " by blocks",
+                    dense_of<Alg, OL>(ctga::expr::run_blocks<double, plan, X::layout, Y::layout, OL>(x.data(), y.data())),
+                    expected);
+        check_close(name + " by the table loop",
+                    dense_of<Alg, OL>(ctga::expr::run_rows<double, rows, Y::layout, OL>(x.data(), y.data())), expected);
+    });
+}
+
 }  // namespace ctga::test::looped

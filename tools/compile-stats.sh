@@ -5,6 +5,10 @@
 #
 #   bash tools/compile-stats.sh            all translation units
 #   bash tools/compile-stats.sh 'tests/'   only files whose path matches the regex
+#   EXTRA_CXXFLAGS=-O2 bash tools/compile-stats.sh
+#                                          flags appended to every command (after the build's own,
+#                                          so -O2 overrides a Release build's -O3)
+#   BUDGET='30 1536' ...                   units over 30 s wall or 1536 MB are marked OVER and counted
 #
 # Needs a configured build tree (bash tools/test.sh, or tools/configure.sh).
 # Compile-fail tests show up with status FAIL (expected).
@@ -31,11 +35,17 @@ for ((i = 0; i < n; ++i)); do
     f=${files[i]}
     rel=${f#"$root"/}
     printf '[%d/%d] %s\n' $((i + 1)) "$n" "$rel" >&2
-    time_compile "${dirs[i]}" "$(compile_db_to_devnull "${cmds[i]}")"
+    cmd=$(compile_db_to_devnull "${cmds[i]}")
+    [[ -z ${EXTRA_CXXFLAGS:-} ]] || cmd=${cmd/" -o /dev/null"/" $EXTRA_CXXFLAGS -o /dev/null"}
+    time_compile "${dirs[i]}" "$cmd"
     printf '%s\t%s\t%s\t%s\n' "$time_wall" "$time_rss" "$time_status" "$rel" >> "$rows"
 done
 
+read -r budget_s budget_mb <<<"${BUDGET:-30 1536}"
 printf '%8s %8s %6s  %s\n' "wall s" "RSS MB" status file
 sort -t $'\t' -k1,1gr "$rows" | while IFS=$'\t' read -r wall rss status rel; do
+    awk -v w="$wall" -v r="$rss" -v s="$budget_s" -v m="$budget_mb" 'BEGIN { exit !(w > s || r > m) }' && status="$status OVER"
     printf '%8s %8s %6s  %s\n' "$wall" "$rss" "$status" "$rel"
 done
+over=$(awk -F'\t' -v s="$budget_s" -v m="$budget_mb" '$1 > s || $2 > m' "$rows" | wc -l)
+echo "compile-stats: $n units, $over over the budget of $budget_s s / $budget_mb MB${EXTRA_CXXFLAGS:+ (with $EXTRA_CXXFLAGS)}"

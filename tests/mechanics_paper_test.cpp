@@ -4,12 +4,15 @@
 // out here, or the library's structured maps, which share no code with the engine's products).
 // §4 (the shuffle product) is tests/paper_examples_test.cpp; exp/log of §3 are exp_log_test.cpp;
 // the 1,000-case comparison with Eigen is spatial_matrix_test.cpp.
+// PARTS: 6
+// (§2 and §3, §6 and four blocks of §5 are compiled as six units: support/parts.hpp)
 #include <cmath>
 #include <random>
 
 #include <ctga/ctga.hpp>
 
 #include "support/catch.hpp"
+#include "support/parts.hpp"
 
 namespace {
 
@@ -68,19 +71,19 @@ double max_diff(const X& x, const Y& y) {
     for (std::size_t i = 0; i < x.size(); ++i) e = std::max(e, std::abs(x[i] - y[i]));
     return e;
 }
-double max_diff6(const m6& a, const m6& b) {
+[[maybe_unused]] double max_diff6(const m6& a, const m6& b) {
     double e = 0;
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) e = std::max(e, std::abs(a[i][j] - b[i][j]));
     return e;
 }
-v3 head(const screw<>& s) { return {s[0], s[1], s[2]}; }
-v3 tail(const screw<>& s) { return {s[3], s[4], s[5]}; }
-v3 head(const coscrew<>& P) { return {P[0], P[1], P[2]}; }
-v3 tail(const coscrew<>& P) { return {P[3], P[4], P[5]}; }
+[[maybe_unused]] v3 head(const screw<>& s) { return {s[0], s[1], s[2]}; }
+[[maybe_unused]] v3 tail(const screw<>& s) { return {s[3], s[4], s[5]}; }
+[[maybe_unused]] v3 head(const coscrew<>& P) { return {P[0], P[1], P[2]}; }
+[[maybe_unused]] v3 tail(const coscrew<>& P) { return {P[3], P[4], P[5]}; }
 
 // §2's 6×6 matrices, written out from R and t.
-m6 H_of(const motor_map<>& G, bool inverse_transpose) {
+[[maybe_unused]] m6 H_of(const motor_map<>& G, bool inverse_transpose) {
     m6 H{};
     const m3 T = linear3::hat(G.t);
     for (int i = 0; i < 3; ++i)
@@ -92,26 +95,27 @@ m6 H_of(const motor_map<>& G, bool inverse_transpose) {
         }
     return H;
 }
-vec6<double> mul(const m6& A, const vec6<double>& x) {
+[[maybe_unused]] vec6<double> mul(const m6& A, const vec6<double>& x) {
     vec6<double> y{};
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) y[i] += A[i][j] * x[j];
     return y;
 }
-m6 mul(const m6& A, const m6& B) {
+[[maybe_unused]] m6 mul(const m6& A, const m6& B) {
     m6 C{};
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j)
             for (int k = 0; k < 6; ++k) C[i][j] += A[i][k] * B[k][j];
     return C;
 }
-m6 transposed(const m6& A) {
+[[maybe_unused]] m6 transposed(const m6& A) {
     m6 B{};
     for (int i = 0; i < 6; ++i)
         for (int j = 0; j < 6; ++j) B[i][j] = A[j][i];
     return B;
 }
 
+#if CTGA_TEST_PART_HOLDS(0)
 // ---- §2 --------------------------------------------------------------------------------------
 
 TEST_CASE("§2 s = (ω, v), P = (l, p): the types are the paper's 6-vectors", "[paper][section2]") {
@@ -246,6 +250,8 @@ TEST_CASE("§3 [s1, s2] = ½(s1 s2 − s2 s1) = (ω1 × ω2, ω1 × v2 − ω2 �
     }
 }
 
+#endif
+#if CTGA_TEST_PART_HOLDS(1)
 // ---- §5 --------------------------------------------------------------------------------------
 
 TEST_CASE("§5 Q0 = (g ḡ) Q0 (g ḡ)*, but Q0 ≠ g Q0 g* and Q0 ≠ ḡ Q0 ḡ*", "[paper][section5]") {
@@ -275,6 +281,8 @@ TEST_CASE("§5 A = g A g* = ḡ A ḡ*, and (g ḡ) fixes the pseudoscalar (dete
     }
 }
 
+#endif
+#if CTGA_TEST_PART_HOLDS(3)
 TEST_CASE("§5 h(a ∧ b)h* = (h a h*) ∧ (h b h*) and h(a ∨ b)h* = (h a h*) ∨ (h b h*) for h = g ḡ", "[paper][section5]") {
     sampler r;
     for (int trial = 0; trial < 5; ++trial) {
@@ -308,6 +316,8 @@ TEST_CASE("§5 the diagonal inertia: A ∨ (N ∧ s) = (dx ωx, dy ωy, dz ωz, 
     CHECK(max_diff6(inertia_matrix(N), inertia_matrix(inertia_of(*b))) == 0);
 }
 
+#endif
+#if CTGA_TEST_PART_HOLDS(4)
 TEST_CASE("§5 ḡ P ḡ* = A ∨ ((g ḡ) N (g ḡ)* ∧ g s g*): the momentum is covariant", "[paper][section5]") {
     sampler r;
     for (int trial = 0; trial < 10; ++trial) {
@@ -361,6 +371,8 @@ TEST_CASE("§5 E_k = ½ P ∨ (Q0 ∧ s) = ½ s̄ ∨ (N ∧ s), with A ∨ (Q0 
     }
 }
 
+#endif
+#if CTGA_TEST_PART_HOLDS(5)
 TEST_CASE("§5 screws and co-screws also follow the inertia's law: x → (g ḡ) x (g ḡ)*", "[paper][section5]") {
     sampler r;
     for (int trial = 0; trial < 10; ++trial) {
@@ -388,6 +400,8 @@ TEST_CASE("§5 the mobility M = N⁻¹ as an element: E ∨ (M ∧ (A ∨ (N ∧
     }
 }
 
+#endif
+#if CTGA_TEST_PART_HOLDS(2)
 // ---- §6 --------------------------------------------------------------------------------------
 
 TEST_CASE("§6 (sN − Ns) ∧ s = 0 and ½ A ∨ ((s̄N − Ns̄) ∧ s) = {s, A ∨ (N ∧ s)}", "[paper][section6]") {
@@ -486,4 +500,5 @@ TEST_CASE("§6 dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄) for N moved uniformly a
     }
 }
 
+#endif
 }  // namespace

@@ -16,6 +16,7 @@
 #include <ctga/reference/dense.hpp>
 
 #include "support/catch.hpp"
+#include "support/parts.hpp"
 #include "support/shapes.hpp"
 
 namespace ctga::test {
@@ -269,18 +270,7 @@ void check_grades_of_blade_products(Rng& rng) {
     CHECK(outside <= tolerance * (scale > 0 ? scale : 1.0));
 }
 
-// ---- the suite, in parts ------------------------------------------------------------------
-//
-// A test file whose header says `// PARTS: K` is compiled as K translation units (see
-// tests/CMakeLists.txt), each defining CTGA_TEST_PART (0 … K−1) and CTGA_TEST_PARTS; part k
-// instantiates work items k, k + K, k + 2K, … of the suite, so that no translation unit holds
-// the whole algebra's instantiations (compile time and memory per unit are what a CI runner and
-// a user's editor feel). A file without the header is one part.
-#ifndef CTGA_TEST_PART
-#define CTGA_TEST_PART 0
-#define CTGA_TEST_PARTS 1
-#define CTGA_TEST_PART_NAME ""
-#endif
+// ---- the suite, in parts (support/parts.hpp) ---------------------------------------------
 
 struct suite_part {
     std::size_t index, count;

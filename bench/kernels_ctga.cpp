@@ -15,7 +15,7 @@ motor<> motor_product(const ctga_inputs& in) { return in.g * in.g2; }
 screw<> screw_transform(const ctga_inputs& in) { return transform(in.G, in.s); }
 coscrew<> coscrew_transform(const ctga_inputs& in) { return transform(in.G, in.P); }
 body_inertia<> inertia_transform(const ctga_inputs& in) { return transform(in.G, in.N); }
-screw<> eom(const ctga_inputs& in) { return acceleration(in.body.N, in.body.M, in.s, in.W); }
+screw<> eom(const ctga_inputs& in) { return acceleration(in.body, in.s, in.W); }
 
 state step(const ctga_inputs& in) {
     state x;

@@ -76,7 +76,7 @@ struct no_wrench {
 
 // How the fixed-frame acceleration is evaluated: about the body's own frame and moved out
 // (dynamics.hpp: ṡ = g ṡ_b g*; the default: its error stays at ε|t| for a body at distance |t|,
-// and it is cheaper, 190 multiplications against 280, since the body's N and M are used as
+// and it is cheaper, 178 multiplications against 280, since the body's N and M are used as
 // stored), or with the inertia moved to the fixed frame, as the paper writes it (§6; its error
 // grows like ε|t|², docs/accuracy.md).
 enum class fixed_frame_evaluation { about_body, in_space };
@@ -95,7 +95,7 @@ struct rigid_body_motion {
 
     [[nodiscard]] constexpr screw<T> acceleration(const motor<T>& g, const screw<T>& s) const noexcept {
         const ctga::wrench<T> W = applied(g, s);
-        if constexpr (Frame == frame::body) return ctga::acceleration(body.N, body.M, s, W);
+        if constexpr (Frame == frame::body) return ctga::acceleration(body, s, W);
         else if constexpr (Evaluation == fixed_frame_evaluation::in_space) return fixed_frame_rates(body, g, s, W).s_dot;
         else return fixed_frame_rates_about_body(body, g, s, W).s_dot;
     }

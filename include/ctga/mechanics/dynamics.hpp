@@ -14,6 +14,8 @@
 // velocity s_b = g* s g.
 #pragma once
 
+#include <type_traits>
+
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/inertia.hpp"
 #include "ctga/mechanics/motor.hpp"
@@ -30,13 +32,25 @@ inline constexpr auto motion_lhs = formula([](auto N, auto s, auto sdot) {
     return (N ^ lift(sdot)) + half * ((bar(x) * N - N * bar(x)) ^ x);
 });
 
-// ṡ from N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, all four quantities in one frame.
-template <class T, auto LN>
-[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> acceleration(const multivector<cl062, T, LN>& N, const mobility<T>& M,
-                                              const screw<T>& s, const wrench<T>& W) noexcept {
+// ṡ from N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, all four quantities in one frame. M is any mobility
+// (36 blades: a general 6×6 inverse inertia) or a rigid body's body_mobility, solved about the
+// centre of mass (inertia.hpp: E ∨ (M ∧ P) = t (E ∨ (M_c ∧ (t̄* P t̄))) t*, 24m 18a instead of 36m 30a).
+template <class T, class Inertia, class Mobility>
+    requires(formula_argument<Inertia> &&
+             (std::is_same_v<Mobility, mobility<T>> || std::is_same_v<Mobility, body_mobility<T>>))
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> acceleration(const Inertia& N, const Mobility& M, const screw<T>& s,
+                                                                 const wrench<T>& W) noexcept {
     const coscrew<T> P = momentum(N, s);
     const coscrew<T> rhs = W - coadjoint(s, P);
     return velocity(M, rhs);
+}
+
+// A rigid body's acceleration, from N and M by their ten parameters each (body.Nb, body.Mb): the
+// momentum at 24m 18a, the solve about the centre of mass at 24m 18a.
+template <class T>
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> acceleration(const rigid_body<T>& body, const screw<T>& s,
+                                                                 const wrench<T>& W) noexcept {
+    return acceleration(body.Nb, body.Mb, s, W);
 }
 
 template <class T = double>
@@ -65,7 +79,7 @@ template <class T>
 [[nodiscard]] constexpr state_rate<T> fixed_frame_rates_about_body(const rigid_body<T>& body, const motor<T>& g,
                                                                    const screw<T>& s, const wrench<T>& W) noexcept {
     const motor_map<T> G = map_of(g), G_inverse = inverse(G);
-    const screw<T> s_dot_b = acceleration(body.N, body.M, transform(G_inverse, s), transform(G_inverse, W));
+    const screw<T> s_dot_b = acceleration(body, transform(G_inverse, s), transform(G_inverse, W));
     return {half * s * g, transform(G, s_dot_b)};
 }
 
@@ -73,7 +87,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr state_rate<T> body_frame_rates(const rigid_body<T>& body, const motor<T>& g, const screw<T>& s_b,
                                                        const wrench<T>& W_b) noexcept {
-    return {half * g * s_b, acceleration(body.N, body.M, s_b, W_b)};
+    return {half * g * s_b, acceleration(body, s_b, W_b)};
 }
 
 }  // namespace ctga

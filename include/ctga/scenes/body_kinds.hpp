@@ -18,7 +18,7 @@
 //   sphere        m, d                 N = d·(rotation block) + m·(mass block)
 //   axisymmetric  m, d_xy, d_z         about the body's e3 axis
 //   diagonal      m, dx, dy, dz        principal axes (§5's diagonal inertia)
-//   general       rigid_inertia N and mobility M as stored (24 and 36 blades): any body frame
+//   general       rigid_inertia N (24 blades) and body_mobility M (1/m, c, J): any body frame
 // A planar body needs its plane's normal to be a principal axis through the centre of mass
 // (sphere, axisymmetric or diagonal): then N keeps the plane's velocities in the plane.
 #pragma once
@@ -147,16 +147,28 @@ struct diagonal {
     };
 };
 
+// N as its 24 blades, M by the ten parameters of body_mobility (1/m, c, J): M = (t t̄) M_c (t t̄)*,
+// which acts about the centre of mass, E ∨ (M ∧ X) = t (E ∨ (M_c ∧ (t̄* X t̄))) t* (inertia.hpp).
+// (body_acceleration runs the typed acceleration(body, …), with N by its ten parameters: the same
+// 24m 18a momentum.)
 struct general {
     template <class T>
     using data = rigid_body<T>;
     template <class T>
     static constexpr auto arguments(const data<T>& b) noexcept {
-        return std::tuple<const rigid_inertia<T>&, const mobility<T>&>{b.N, b.M};
+        return std::tuple_cat(std::tuple<const rigid_inertia<T>&>{b.N}, b.Mb.parameters());
     }
-    static constexpr auto N = [](auto N, auto) { return N; };
-    static constexpr auto M = [](auto, auto M) { return M; };
+    static constexpr auto N = [](auto N, auto...) { return N; };
+    static constexpr auto M = [](auto, auto... m) { return body_mobility<>::element(m...); };
+    static constexpr auto velocity = [](auto X, auto, auto... m) { return body_mobility<>::velocity_of(X, m...); };
 };
+
+// E ∨ (M ∧ X): the kind's mobility acting on a co-screw X, in the kind's own form when it has one.
+template <class K, class X, class... P>
+constexpr auto mobility_acting(X x, P... p) noexcept {
+    if constexpr (requires { K::velocity(x, p...); }) return K::velocity(x, p...);
+    else return invariants::E & (K::M(p...) ^ x);
+}
 
 }  // namespace inertia_kind
 
@@ -165,18 +177,16 @@ struct general {
 template <class K>
 inline constexpr auto free_acceleration = formula([](auto s, auto... p) {
     using invariants::A;
-    using invariants::E;
     const auto x = lift(s);
     const auto P = A & (K::N(p...) ^ x);
-    return E & (K::M(p...) ^ (half * (P * bar(x) - bar(x) * P)));
+    return inertia_kind::mobility_acting<K>(half * (P * bar(x) - bar(x) * P), p...);
 });
 template <class K>
 inline constexpr auto forced_acceleration = formula([](auto s, auto W, auto... p) {
     using invariants::A;
-    using invariants::E;
     const auto x = lift(s);
     const auto P = A & (K::N(p...) ^ x);
-    return E & (K::M(p...) ^ (W - half * (bar(x) * P - P * bar(x))));
+    return inertia_kind::mobility_acting<K>(W - half * (bar(x) * P - P * bar(x)), p...);
 });
 
 // X's blades viewed in Cl(0,6,2) (lift), as a multivector type.
@@ -230,10 +240,10 @@ template <class S, class K, class T, class... W>
     using lifted = lifted_type<typename S::template screw_type<T>>;
     if constexpr (std::is_same_v<K, inertia_kind::general>) {
         // 24 + 36 blades make one program longer than expr::inline_terms, which would run as a
-        // loop (program.hpp); the typed acceleration stages P and the right-hand side as three
-        // inlined programs, at the same count (78m).
-        if constexpr (sizeof...(W) == 0) return ctga::acceleration(body.N, body.M, s, ctga::wrench<T>{});
-        else return ctga::acceleration(body.N, body.M, s, ctga::wrench<T>(applied...));
+        // loop (program.hpp); the typed acceleration stages P and the right-hand side as inlined
+        // programs and solves about the centre of mass (body.Mb, inertia.hpp): 66m, not 78m.
+        if constexpr (sizeof...(W) == 0) return ctga::acceleration(body, s, ctga::wrench<T>{});
+        else return ctga::acceleration(body, s, ctga::wrench<T>(applied...));
     } else return std::apply(
         [&](const auto&... p) {
             if constexpr (sizeof...(W) == 0) return lower(project<lifted>(free_acceleration<K>(s, p...)));

@@ -8,16 +8,12 @@
 #include <ctga/ctga.hpp>
 
 #include "support/catch.hpp"
+#include "support/general_reference.hpp"
 
 namespace {
 using namespace ctga;
 
-template <class X, class Y>
-double rel(const X& x, const Y& y) {
-    double d = 0, s = 1;
-    for (std::size_t i = 0; i < x.size(); ++i) d = std::max(d, std::abs(x[i] - y[i])), s = std::max(s, std::abs(y[i]));
-    return d / s;
-}
+using test::rel;  // support/general_reference.hpp
 }  // namespace
 
 static_assert(cost_of<decltype(momentum.formula(std::declval<const body_inertia<>&>(), std::declval<const screw<>&>())),

@@ -14,16 +14,12 @@
 #include <ctga/ctga.hpp>
 
 #include "support/catch.hpp"
+#include "support/general_reference.hpp"
 
 namespace {
 using namespace ctga;
 
-template <class X, class Y>
-double rel(const X& x, const Y& y) {
-    double d = 0, s = 1;
-    for (std::size_t i = 0; i < x.size(); ++i) d = std::max(d, std::abs(x[i] - y[i])), s = std::max(s, std::abs(y[i]));
-    return d / s;
-}
+using test::rel;  // support/general_reference.hpp
 
 using vec6d = std::array<double, 6>;
 using mat6d = std::array<std::array<double, 6>, 6>;

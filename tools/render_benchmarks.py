@@ -32,7 +32,7 @@ def medians(path, field="real_time"):
     for b in data["benchmarks"]:
         if b.get("aggregate_name") != "median" or field not in b:
             continue
-        op, impl = b["run_name"].split("/")
+        op, impl = b["run_name"].rsplit("/", 1)  # looped_vs_dense/<product>/<implementation>
         scale = {"ns": 1.0, "us": 1e3, "ms": 1e6, "s": 1e9}[b["time_unit"]] if field == "real_time" else 1.0
         out[(op, impl)] = b[field] * scale
     return data["context"], out
@@ -118,6 +118,22 @@ def main():
             ra, rb, rc = (rate.get(("batch_step", x)) for x in (a, b, c))
             if ra and rc:
                 lines.append(f"| {name} | {ra / 1e6:.1f} M/s | {rb / 1e6:.1f} M/s | {rc / 1e6:.1f} M/s | {ra / rc:.2f} |")
+        lines.append("")
+    # issue 14: products past the unrolling threshold, looped, against the dense reference
+    products = ["geometric", "outer", "regressive", "left_contraction", "right_contraction"]
+    if any((f"looped_vs_dense/{p}", "looped") in t for p in products):
+        lines += ["## Looped products against the dense reference", "",
+                  "The full 256 × 256 products of two general multivectors of Cl(0,6,2) (`bench/looped.cpp`): past",
+                  "`expr::loop_threshold` ctga evaluates them as looped products (`expr/looped.hpp`, by blocks",
+                  "of the four low generators); the dense reference multiplies all 2⁸ × 2⁸ blade pairs through",
+                  "its run-time tables. Target (issue 14): dense/looped ≥ 3 on the geometric product.", "",
+                  "| product | looped | dense | dense/looped |", "| --- | --- | --- | --- |"]
+        for p in products:
+            lp, dn = t.get((f"looped_vs_dense/{p}", "looped")), t.get((f"looped_vs_dense/{p}", "dense"))
+            mark = ""
+            if p == "geometric" and lp and dn:
+                mark = " ✓" if dn / lp >= 3 else " ✗"
+            lines.append(f"| {p.replace('_', ' ')} | {fmt_time(lp)} | {fmt_time(dn)} | {ratio(dn, lp, 1)}{mark} |")
         lines.append("")
     if os.path.exists(compile_md):
         with open(compile_md) as f:

@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "ctga/expr/looped.hpp"
@@ -168,9 +169,46 @@ CTGA_ALWAYS_INLINE constexpr std::array<T, N> run_steps([[maybe_unused]] const T
 #endif
 #undef CTGA_UNROLL_TERMS
 
+// The same sums in constant evaluation, where the compiler interprets the program instead of
+// compiling it: the tree of each assignment walked directly (the same operations in the same
+// order as the steps, so the same bits), without the step list's register writes, which cost an
+// integration inside a constant expression (examples/compile_time_trajectory.cpp) half its
+// evaluation budget.
+template <class T>
+constexpr T tree_sum(const op_term* terms, std::uint32_t begin, std::uint32_t n, std::uint32_t rotation, std::uint32_t b,
+                     std::uint32_t e, bool negate, const T* const* leaves, const T* tmp) noexcept {
+    const op_term& first = terms[begin + (b + rotation) % n];
+    if (e - b == 1) {
+        const T v = term_magnitude<T>(first, leaves, tmp);
+        return (first.c.num < 0) != negate ? T(-v) : v;
+    }
+    const std::uint32_t m = b + (e - b) / 2;
+    const bool subtract = (terms[begin + (m + rotation) % n].c.num < 0) != negate;
+    const T left = tree_sum<T>(terms, begin, n, rotation, b, m, negate, leaves, tmp);
+    const T right = tree_sum<T>(terms, begin, n, rotation, m, e, subtract ? !negate : negate, leaves, tmp);
+    return subtract ? left - right : left + right;
+}
+
+template <class T, class P, std::size_t N>
+constexpr std::array<T, N> run_in_constant_evaluation(const T* const* leaves) noexcept {
+    std::array<T, (P::tmp_count > 0 ? P::tmp_count : 1)> tmp{};
+    std::array<T, N> out{};
+    for (std::uint32_t a = 0; a < P::assignment_count; ++a) {
+        const std::uint32_t begin = P::offsets[a], n = P::offsets[a + 1] - begin;
+        std::uint32_t rotation = 0;
+        while (rotation < n && P::terms[begin + rotation].c.num <= 0) ++rotation;
+        if (rotation == n) rotation = 0;
+        const T v = n == 0 ? T{} : tree_sum<T>(P::terms.data(), begin, n, rotation, 0, n, false, leaves, tmp.data());
+        if (a < P::tmp_count) tmp[a] = v;
+        else out[a - P::tmp_count] = v;
+    }
+    return out;
+}
+
 // Run program P on the leaves' storage: the temporaries in order, then the N outputs.
 template <class T, class P, std::size_t N>
 CTGA_ALWAYS_INLINE constexpr std::array<T, N> run(const T* const* leaves) noexcept {
+    if (std::is_constant_evaluated()) return run_in_constant_evaluation<T, P, N>(leaves);
     return run_steps<T, P, N>(leaves, std::make_index_sequence<straight_line<P>::count>{});
 }
 

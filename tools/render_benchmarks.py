@@ -138,6 +138,11 @@ def main():
     if os.path.exists(compile_md):
         with open(compile_md) as f:
             lines += ["## Compile time", "", f.read().strip(), ""]
+    # measured by hand when the engine changed (not regenerated): before/after per expression class
+    history = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench", "compile", "history.md")
+    if os.path.exists(history):
+        with open(history) as f:
+            lines += [f.read().strip(), ""]
     else:
         lines += ["## Compile time", "", "Run `bash tools/compile-cost.sh` before `tools/bench.sh` to include the",
                   "compile-time tables here.", ""]

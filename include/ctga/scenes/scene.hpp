@@ -21,7 +21,15 @@
 #include <type_traits>
 #include <utility>
 
-#include <boost/hana.hpp>
+#include <boost/hana/at.hpp>
+#include <boost/hana/bool.hpp>
+#include <boost/hana/filter.hpp>
+#include <boost/hana/for_each.hpp>
+#include <boost/hana/front.hpp>
+#include <boost/hana/remove_if.hpp>
+#include <boost/hana/tuple.hpp>
+#include <boost/hana/unpack.hpp>
+#include <boost/hana/zip.hpp>
 
 #include "ctga/integrators/model.hpp"
 #include "ctga/mechanics/motor.hpp"

@@ -411,10 +411,23 @@ using velocity_operation = operation<std::remove_const_t<decltype(velocity_formu
 // velocity.formula is E ∨ (M ∧ P) for every M.
 struct velocity_t : inertia_detail::velocity_operation {
     using inertia_detail::velocity_operation::operator();
+    // A rigid body's mobility by its ten parameters: t (E ∨ (M_c ∧ (t̄* P t̄))) t* (body_mobility)
+    // in coordinates, P = (l, p): l' = l − c × p (P about the centre of mass), ω = J l', v' = p/m
+    // (M_c), v = v' + c × ω (back by t). The same 24m 18a as body_mobility::velocity, whose
+    // symbolic normal form (eleven arguments, three sandwiches) costs a translation unit about
+    // 1.3 s and 150 MB to compile: the formula stays for larger formulas (the scenes' body
+    // kinds), this call is the one the equations of motion make. tests/body_mobility_test.cpp
+    // checks both against the 36 blades and against Gaussian elimination on §2's 6×6 N.
     template <class T>
     [[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> operator()(const body_mobility<T>& M, const coscrew<T>& P) const noexcept {
-        return std::apply([&](const auto&... p) { return lowered_screw_t{}(body_mobility<T>::velocity(P, p...)); },
-                          M.parameters());
+        const vec3<T> c{M.cx[0], M.cy[0], M.cz[0]}, p{P[3], P[4], P[5]};
+        const vec3<T> cp = linear3::cross(c, p);
+        const vec3<T> l{P[0] - cp[0], P[1] - cp[1], P[2] - cp[2]};
+        const vec3<T> w{M.jxx[0] * l[0] + M.jxy[0] * l[1] + M.jxz[0] * l[2], M.jxy[0] * l[0] + M.jyy[0] * l[1] + M.jyz[0] * l[2],
+                        M.jxz[0] * l[0] + M.jyz[0] * l[1] + M.jzz[0] * l[2]};
+        const vec3<T> cw = linear3::cross(c, w);
+        const T inv_m = M.inv_m[0];
+        return screw<T>{w[0], w[1], w[2], inv_m * p[0] + cw[0], inv_m * p[1] + cw[1], inv_m * p[2] + cw[2]};
     }
 };
 inline constexpr velocity_t velocity{{formula(inertia_detail::velocity_formula), lowered_screw_t{}}};

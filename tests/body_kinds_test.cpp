@@ -2,6 +2,7 @@
 // the engine's price of one body step per combination (static_asserted), and the same trajectory
 // as the general 3D code (a rigid_body_motion with the full 24-blade inertia and 6-blade screws)
 // for every kind.
+// PARTS: 3
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -11,6 +12,7 @@
 
 #include "support/catch.hpp"
 #include "support/general_reference.hpp"
+#include "support/parts.hpp"
 
 namespace {
 
@@ -73,6 +75,7 @@ double same_as_general(const Method& method, const principal& p, const screw<dou
 
 }  // namespace
 
+#if CTGA_TEST_PART_HOLDS(0)
 TEST_CASE("cost of one body step per subspace and inertia structure", "[scenes][cost]") {
     report<sub::full, kind::general>("full, general");
     report<sub::full, kind::diagonal>("full, diagonal");
@@ -96,6 +99,8 @@ TEST_CASE("cost of one body step per subspace and inertia structure", "[scenes][
     CHECK(step<sub::full, kind::general>.mul == 110);  // = ½ g s (44m) + the typed acceleration (66m: body.Mb)
 }
 
+#endif
+#if CTGA_TEST_PART_HOLDS(1)
 TEST_CASE("every body kind follows the general 3D code's trajectory to 1e-12", "[scenes]") {
     const motor<double> g0 = rigid_motion(translation(0.5, -1.0, 0.0), rotation(0.0, 0.0, 1.0, 0.7));  // in the plane
     const motor<double> tilted = rigid_motion(translation(0.5, -1.0, 2.0), rotation(1.0 / 3, 2.0 / 3, 2.0 / 3, 0.7));
@@ -127,6 +132,8 @@ TEST_CASE("every body kind follows the general 3D code's trajectory to 1e-12", "
     std::printf("worst difference from the general code: %.2e\n", worst);
 }
 
+#endif
+#if CTGA_TEST_PART_HOLDS(2)
 TEST_CASE("under gravity, the body kinds follow the general 3D code to 1e-12", "[scenes]") {
     const vec3<double> a{0.3, -9.81, 0.0};  // in the e1, e2 plane, so the planar body feels all of it
     const principal box{2.0, 2.0, 2.5, 3.0};
@@ -150,3 +157,4 @@ TEST_CASE("under gravity, the body kinds follow the general 3D code to 1e-12", "
     compare.template operator()<sub::full, kind::general>("full, general", tilted, screw<double>{0.3, 1.0, -0.4, 0.2, -0.1, 0.5});
     compare.template operator()<sub::planar, kind::diagonal>("planar, diagonal", flat, screw<double>{0, 0, 1.3, 0.2, -0.1, 0});
 }
+#endif

@@ -3,7 +3,7 @@
 #   (a) bench/compile/core_only.cpp   the algebra core and the engine only: one motor product
 #   (b) bench/compile/mechanics.cpp   <ctga/ctga.hpp> and the mechanics (momentum, transforms
 #                                     by a motor_map, acceleration, body_frame_rates)
-#   (c) the heaviest test unit         only with --with-heaviest (1.5 to 5 minutes)
+#   (c) the heaviest test unit         only with --with-heaviest (about 30 s)
 #   (d) bench/compile/generators.cpp   one algebra of n generators and one geometric product of
 #                                     two general vectors, bivectors, even elements and general
 #                                     multivectors, n = 3..10 (past the loop threshold: looped)
@@ -32,7 +32,7 @@ db=$build/compile_commands.json
 source "$root/tools/lib/compile-db.sh"
 
 with_heaviest=0
-heaviest=tests/algebra_cl062_test.cpp
+heaviest=parts/body_kinds_test_part1.cpp  # the heaviest unit measured (test files compile in parts)
 repeat=1
 nmin=3 nmax=10
 plot=$root/docs/img/compile_cost.svg
@@ -187,8 +187,9 @@ std_flags=$(grep -oE -- '-(O[0-9s]|std=[^ ]+|DNDEBUG)' <<<"$flags" | paste -sd' 
     echo "ctga has no global product tables: the blade pairs, signs and the program are computed at"
     echo "compile time for each product's operand types, so each row is the cost of declaring the"
     echo "algebra and compiling that one product. *pairs*: operand blades squared; past"
-    echo "\`expr::loop_threshold\` surviving pairs (1,024) the product is looped (a loop over per-row bit"
-    echo "sets of the surviving pairs) instead of unrolled; *result*: blades of the result type;"
+    echo "\`expr::loop_threshold\` surviving pairs (1,024) the product is looped (blocks of the four low"
+    echo "generators through one unrolled kernel, or a loop over bit sets of the surviving pairs) instead"
+    echo "of unrolled; *result*: blades of the result type;"
     echo "*cost_of*: multiplications and additions of the generated code (looped: one of each per"
     echo "surviving pair)."
     echo

@@ -244,6 +244,13 @@ struct body_inertia {
         return {{{ixx[0], ixy[0], ixz[0]}, {ixy[0], iyy[0], iyz[0]}, {ixz[0], iyz[0], izz[0]}}};
     }
 
+    // Two bodies' inertias in one frame add (§5: N is linear in the mass distribution), so a
+    // composite of rigid bodies has a rigid body's N: its ten parameters are the sums (10a).
+    [[nodiscard]] friend constexpr body_inertia operator+(const body_inertia& a, const body_inertia& b) noexcept {
+        return {a.m + b.m, a.hx + b.hx, a.hy + b.hy, a.hz + b.hz, a.ixx + b.ixx,
+                a.iyy + b.iyy, a.izz + b.izz, a.ixy + b.ixy, a.ixz + b.ixz, a.iyz + b.iyz};
+    }
+
     // As an argument of a formula (formula.hpp): ten leaves, and N as the expression they make,
     //   N = Σ I_o(i,j) (α_i ε̃_j + α_j ε̃_i)/(1 + δ_ij) + m (a2a3e2e3 + a3a1e3e1 + a1a2e1e2) + Ĥ blocks,
     // entry (i, j) being the blade α_i ε̃_j (detail/matrix_blades.hpp).

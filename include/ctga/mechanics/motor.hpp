@@ -202,6 +202,25 @@ template <class T>
     return coscrew<T>{l[0], l[1], l[2], p[0], p[1], p[2]};
 }
 
+// The same actions by g⁻¹ = g*, without forming its map (Rᵀ applied directly), 24m 18a each:
+// on a screw H⁻¹ s: ω' = Rᵀ ω, v' = Rᵀ (v − t × ω); on a co-screw Hᵀ P: l' = Rᵀ (l − t × p), p' = Rᵀ p.
+template <class T>
+[[nodiscard]] constexpr screw<T> transform_inverse(const motor_map<T>& G, const screw<T>& s) noexcept {
+    const vec3<T> w{s[0], s[1], s[2]};
+    const vec3<T> tw = linear3::cross(G.t, w);
+    const vec3<T> w2 = linear3::apply_transposed(G.R, w);
+    const vec3<T> v2 = linear3::apply_transposed(G.R, vec3<T>{s[3] - tw[0], s[4] - tw[1], s[5] - tw[2]});
+    return screw<T>{w2[0], w2[1], w2[2], v2[0], v2[1], v2[2]};
+}
+template <class T>
+[[nodiscard]] constexpr coscrew<T> transform_inverse(const motor_map<T>& G, const coscrew<T>& P) noexcept {
+    const vec3<T> p{P[3], P[4], P[5]};
+    const vec3<T> tp = linear3::cross(G.t, p);
+    const vec3<T> l2 = linear3::apply_transposed(G.R, vec3<T>{P[0] - tp[0], P[1] - tp[1], P[2] - tp[2]});
+    const vec3<T> p2 = linear3::apply_transposed(G.R, p);
+    return coscrew<T>{l2[0], l2[1], l2[2], p2[0], p2[1], p2[2]};
+}
+
 // Without a prebuilt map: transform(g, x) builds it once and applies it.
 template <class T, class X>
 [[nodiscard]] constexpr auto transform(const motor<T>& g, const X& x) noexcept {

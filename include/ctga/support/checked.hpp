@@ -29,6 +29,7 @@ enum class error_code : unsigned char {
     not_homogeneous,        // the bottom row of a homogeneous matrix is not (0, 0, 0, 1)
     not_a_motor,            // g g* = 1 fails beyond repair (zero or non-finite rotor part)
     not_a_rigid_inertia,    // a 6×6 inertia without the form [[I, m Ĉ], [m Ĉᵀ, m 1]] of §2
+    not_a_unit_axis,        // a joint axis u with ‖u‖ ≠ 1 beyond rounding
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
@@ -49,6 +50,7 @@ using input_error [[deprecated("ctga::input_error is now ctga::error_code")]] = 
         case error_code::not_homogeneous: return "ctga: the bottom row of a homogeneous matrix must be 0 0 0 1";
         case error_code::not_a_rigid_inertia:
             return "ctga: not a rigid body's inertia (mass block m*1, coupling block m*C antisymmetric)";
+        case error_code::not_a_unit_axis: return "ctga: a joint axis must be a unit vector";
         case error_code::not_a_motor: return "ctga: not a rigid motion (the rotor part is zero or non-finite)";
         case error_code::did_not_converge:
             return "ctga: the implicit step did not converge (the step is too large for the angular velocity)";

@@ -1,0 +1,315 @@
+// The algorithms of a kinematic tree (tree.hpp) in the algebra: screws for velocities and
+// accelerations (§3), co-screws for forces (§5), each body's inertia N by its ten parameters
+// (body_inertia), motor maps for the frames (motor.hpp). Featherstone (2008) names them:
+//
+//   forward_kinematics   every body's frame, velocity screw and acceleration          (§4.1)
+//   rnea                 inverse dynamics τ(q, q̇, q̈): the recursive Newton–Euler
+//                        algorithm                                                     (§5.3)
+//   crba                 the joint-space mass matrix H(q): composite rigid bodies       (§6.2)
+//   kinetic_energy, potential_energy
+//
+// Everything is in body coordinates: body i's velocity v_i and acceleration a_i are screws in
+// its own frame, X_i is the motor map of body i in its parent's frame (placement ∘ joint motion).
+// The recursions, with × the Lie bracket of §3 and ×* the coadjoint action {s, P} of §6:
+//
+//   v_i = X_i⁻¹ v_λ + S_i q̇_i
+//   a_i = X_i⁻¹ a_λ + S_i q̈_i + v_i × S_i q̇_i         (a of the world: −g, gravity's trick)
+//   f_i = N_i a_i + v_i ×* (N_i v_i) − f_ext,i         (N s = A ∨ (N ∧ s), the momentum of §5)
+//   τ_i = f_i(S_i) = f_i ∨ (Q0 ∧ S_i),  f_λ += X_i f_i  (the pairing of §5; ḡ f ḡ* moves f out)
+//
+// A joint's S_i q̇_i and S_i are the joint's own sparse screws (joints.hpp): one blade for an
+// axis joint, so the bracket, the momentum of the mass matrix and the pairing are evaluated by
+// the engine on that blade only. The bodies are unrolled at compile time (a fold over their
+// indices), each with its own joint type, parent and ancestors.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include "ctga/chains/joints.hpp"
+#include "ctga/chains/tree.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/inline.hpp"
+#include "ctga/support/math.hpp"
+
+namespace ctga::chains {
+
+template <class Tree, class T = double>
+using configuration = std::array<T, Tree::nq>;  // q: the joints' numbers in body order
+template <class Tree, class T = double>
+using joint_vector = std::array<T, Tree::nv>;  // q̇, q̈, τ
+template <class Tree, class T = double>
+using joint_matrix = std::array<std::array<T, Tree::nv>, Tree::nv>;  // H, row-major
+template <class Tree, class T = double>
+using body_wrenches = std::array<coscrew<T>, Tree::size>;  // external wrench on each body, body frame
+
+template <class Tree, class T = double>
+struct kinematics {
+    std::array<motor_map<T>, Tree::size> X{};     // body i in its parent's frame
+    std::array<motor_map<T>, Tree::size> pose{};  // body i in the world frame
+    std::array<screw<T>, Tree::size> v{};         // velocity, body frame
+    std::array<screw<T>, Tree::size> a{};         // acceleration (spatial, without gravity), body frame
+};
+
+namespace algorithm_detail {
+
+// f(std::integral_constant<std::size_t, I>) for I = 0 … N−1, or N−1 … 0.
+template <std::size_t N, class F>
+CTGA_ALWAYS_INLINE constexpr void forward(F&& f) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) { (f(std::integral_constant<std::size_t, I>{}), ...); }(
+        std::make_index_sequence<N>{});
+}
+template <std::size_t N, class F>
+CTGA_ALWAYS_INLINE constexpr void backward(F&& f) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) { (f(std::integral_constant<std::size_t, N - 1 - I>{}), ...); }(
+        std::make_index_sequence<N>{});
+}
+
+// S q̇ of a joint: Σ_k S_k q̇_k, in the joint's own screw type (one blade for an axis joint).
+template <class J, class P, class T>
+CTGA_ALWAYS_INLINE constexpr auto joint_screw(const P& params, const T* x) noexcept {
+    if constexpr (J::nv == 1) return typename J::template subspace_type<T>{J::template subspace<0, T>(params) * x[0]};
+    else if constexpr (J::nv == 6) return screw<T>{x[0], x[1], x[2], x[3], x[4], x[5]};
+    else static_assert(J::nv == 1 || J::nv == 6, "ctga::chains: a joint has 1 or 6 degrees of freedom (or 0: fixed)");
+}
+
+// Body I's map in its parent's frame.
+template <std::size_t I, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr motor_map<T> joint_map(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+    using J = typename Tree::template joint_at<I>;
+    const auto& L = m.template link<I>();
+    return J::motion(L.placement, L.joint, q.data() + Tree::q_offset[I]);
+}
+
+// −a_g = (0, −g): the world's acceleration in Featherstone's gravity trick (§5.3).
+template <class T>
+constexpr screw<T> lift_gravity(const vec3<T>& g) noexcept {
+    return screw<T>{T(0), T(0), T(0), -g[0], -g[1], -g[2]};
+}
+
+enum class pass { poses, velocities, accelerations };
+
+// The number of ancestors of body i (0 for a body on the world).
+template <class Tree>
+constexpr std::size_t depth_of(std::size_t i) {
+    std::size_t d = 0;
+    for (int k = Tree::parent[i]; k >= 0; k = Tree::parent[static_cast<std::size_t>(k)]) ++d;
+    return d;
+}
+
+// The forward pass of §4.1/§5.3: maps, world poses, velocities and accelerations (as asked).
+template <pass What, class Tree, class T>
+constexpr kinematics<Tree, T> forward_pass(const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
+                                           const T* qdd, const screw<T>& a_world) noexcept {
+    kinematics<Tree, T> k;
+    forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        using J = typename Tree::template joint_at<i>;
+        const auto& L = m.template link<i>();
+        k.X[i] = joint_map<i>(m, q);
+        if constexpr (p < 0) {
+            k.pose[i] = k.X[i];
+        } else {
+            const motor_map<T>& W = k.pose[p];
+            k.pose[i] = {joint_detail::multiply(W.R, k.X[i].R), linear3::add(linear3::apply(W.R, k.X[i].t), W.t)};
+        }
+        if constexpr (What != pass::poses) {
+            constexpr std::size_t o = Tree::v_offset[i];
+            if constexpr (J::nv == 0) {
+                if constexpr (p < 0) {
+                    k.v[i] = screw<T>{};
+                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(k.X[i], a_world);
+                } else {
+                    k.v[i] = transform_inverse(k.X[i], k.v[p]);
+                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(k.X[i], k.a[p]);
+                }
+            } else {
+                const auto vJ = joint_screw<J>(L.joint, qd + o);
+                if constexpr (p < 0) {
+                    k.v[i] = vJ;  // the world does not move
+                    if constexpr (What == pass::accelerations)
+                        k.a[i] = transform_inverse(k.X[i], a_world) + joint_screw<J>(L.joint, qdd + o);
+                } else {
+                    k.v[i] = transform_inverse(k.X[i], k.v[p]) + vJ;
+                    if constexpr (What == pass::accelerations)
+                        k.a[i] = transform_inverse(k.X[i], k.a[p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
+                }
+            }
+        }
+    });
+    return k;
+}
+
+}  // namespace algorithm_detail
+
+// ---- forward kinematics (§4.1) -------------------------------------------------------------------
+
+// Every body's frame: its map in the parent's frame (X) and in the world (pose).
+template <class Tree, class T>
+[[nodiscard]] constexpr kinematics<Tree, T> forward_kinematics(const model<Tree, T>& m,
+                                                               const configuration<Tree, T>& q) noexcept {
+    return algorithm_detail::forward_pass<algorithm_detail::pass::poses>(m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
+}
+// … and every body's velocity screw, body frame.
+template <class Tree, class T>
+[[nodiscard]] constexpr kinematics<Tree, T> forward_kinematics(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                               const joint_vector<Tree, T>& qd) noexcept {
+    return algorithm_detail::forward_pass<algorithm_detail::pass::velocities>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+}
+// … and every body's acceleration (the true spatial acceleration, gravity not included).
+template <class Tree, class T>
+[[nodiscard]] constexpr kinematics<Tree, T> forward_kinematics(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                               const joint_vector<Tree, T>& qd,
+                                                               const joint_vector<Tree, T>& qdd) noexcept {
+    return algorithm_detail::forward_pass<algorithm_detail::pass::accelerations>(m, q, qd.data(), qdd.data(), screw<T>{});
+}
+
+// ---- inverse dynamics: the recursive Newton–Euler algorithm (§5.3) -------------------------------
+
+namespace algorithm_detail {
+template <class Tree, class T>
+constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
+                                     const joint_vector<Tree, T>& qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
+    const kinematics<Tree, T> k =
+        forward_pass<pass::accelerations>(m, q, qd.data(), qdd.data(), lift_gravity(m.gravity));
+    std::array<coscrew<T>, Tree::size> f;
+    forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        const auto& N = m.template link<i>().inertia;
+        // f_i = N a_i + v_i ×* (N v_i) − f_ext
+        f[i] = momentum(N, k.a[i]) + coadjoint(k.v[i], momentum(N, k.v[i]));
+        if (f_ext) f[i] = f[i] - (*f_ext)[i];
+    });
+    joint_vector<Tree, T> tau{};
+    backward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        using J = typename Tree::template joint_at<i>;
+        const auto& L = m.template link<i>();
+        if constexpr (J::nv > 0)
+            [&]<std::size_t... K>(std::index_sequence<K...>) {
+                ((tau[Tree::v_offset[i] + K] = evaluation(f[i], J::template subspace<K, T>(L.joint))), ...);
+            }(std::make_index_sequence<J::nv>{});
+        if constexpr (p >= 0) f[p] = f[p] + transform(k.X[i], f[i]);
+    });
+    return tau;
+}
+}  // namespace algorithm_detail
+
+// τ = ID(q, q̇, q̈): the joint forces that give the bodies acceleration q̈ under gravity.
+template <class Tree, class T>
+[[nodiscard]] constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                   const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd) noexcept {
+    return algorithm_detail::rnea(m, q, qd, qdd, static_cast<const body_wrenches<Tree, T>*>(nullptr));
+}
+// … with an external wrench acting on each body (body frame, about the body's origin).
+template <class Tree, class T>
+[[nodiscard]] constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                   const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd,
+                                                   const body_wrenches<Tree, T>& f_ext) noexcept {
+    return algorithm_detail::rnea(m, q, qd, qdd, &f_ext);
+}
+
+// ---- the mass matrix: the composite rigid body algorithm (§6.2) ----------------------------------
+//
+// N^c_i = N_i + Σ_children X_c N^c_c (the composite of body i and everything it carries, moved
+// into i's frame: transform(X, body_inertia), 54m 50a). Column (i, k) of H: F = N^c_i S_ik, then
+// H(j, l) = F(S_jl) for body i's own dofs and, moving F out through X_i, X_λ(i), …, each ancestor j.
+
+namespace algorithm_detail {
+// H(j, ·) = F(S_j) for body j's dofs.
+template <std::size_t J, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void fill_rows(const model<Tree, T>& m, joint_matrix<Tree, T>& H, std::size_t col,
+                                            const coscrew<T>& F) noexcept {
+    using Jt = typename Tree::template joint_at<J>;
+    [&]<std::size_t... L>(std::index_sequence<L...>) {
+        ((H[Tree::v_offset[J] + L][col] = H[col][Tree::v_offset[J] + L] =
+              evaluation(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
+         ...);
+    }(std::make_index_sequence<Jt::nv>{});
+}
+// F moved out of body `Child` into its parent's frame, and the parent's entries filled; then on up.
+template <std::size_t Child, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void fill_ancestors(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
+                                                 joint_matrix<Tree, T>& H, std::size_t col, const coscrew<T>& F) noexcept {
+    constexpr int p = Tree::parent[Child];
+    if constexpr (p >= 0) {
+        const coscrew<T> Fp = transform(X[Child], F);
+        if constexpr (Tree::template joint_at<static_cast<std::size_t>(p)>::nv > 0) fill_rows<static_cast<std::size_t>(p)>(m, H, col, Fp);
+        fill_ancestors<static_cast<std::size_t>(p)>(m, X, H, col, Fp);
+    }
+}
+// Column K of body I's dofs, from F = N^c_I S_IK.
+template <std::size_t I, std::size_t K, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void crba_column(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
+                                              joint_matrix<Tree, T>& H, const coscrew<T>& F) noexcept {
+    const std::size_t col = Tree::v_offset[I] + K;
+    fill_rows<I>(m, H, col, F);
+    fill_ancestors<I>(m, X, H, col, F);
+}
+}  // namespace algorithm_detail
+
+template <class Tree, class T>
+[[nodiscard]] constexpr joint_matrix<Tree, T> crba(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+    using namespace algorithm_detail;
+    std::array<motor_map<T>, Tree::size> X;
+    forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
+    std::array<body_inertia<T>, Tree::size> Nc;
+    forward<Tree::size>([&](auto body) { Nc[decltype(body)::value] = m.template link<decltype(body)::value>().inertia; });
+    backward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        if constexpr (p >= 0) Nc[p] = Nc[p] + transform(X[i], Nc[i]);
+    });
+    joint_matrix<Tree, T> H{};
+    forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        using J = typename Tree::template joint_at<i>;
+        if constexpr (J::nv > 0)
+            [&]<std::size_t... K>(std::index_sequence<K...>) {
+                (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
+            }(std::make_index_sequence<J::nv>{});
+    });
+    return H;
+}
+
+// ---- energies ----------------------------------------------------------------------------------
+
+// ½ Σ v_i ∨ … : the kinetic energy ½ s̄ ∨ (N ∧ s) of §5, summed over the bodies.
+template <class Tree, class T>
+[[nodiscard]] constexpr T kinetic_energy(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                         const joint_vector<Tree, T>& qd) noexcept {
+    const kinematics<Tree, T> k = forward_kinematics(m, q, qd);
+    T e = T(0);
+    algorithm_detail::forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        e = e + ctga::kinetic_energy(m.template link<i>().inertia, k.v[i]);
+    });
+    return e;
+}
+
+// −Σ m_i g·c_i, c_i the world position of body i's centre of mass: with the body's pose (R, t)
+// and h = m c, m_i c_i = R h + m t.
+template <class Tree, class T>
+[[nodiscard]] constexpr T potential_energy(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+    const kinematics<Tree, T> k = forward_kinematics(m, q);
+    T e = T(0);
+    algorithm_detail::forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        const body_inertia<T>& N = m.template link<i>().inertia;
+        const vec3<T> Rh = linear3::apply(k.pose[i].R, N.first_moment());
+        const T mass = N.mass();
+        e = e - (m.gravity[0] * (Rh[0] + mass * k.pose[i].t[0]) + m.gravity[1] * (Rh[1] + mass * k.pose[i].t[1]) +
+                 m.gravity[2] * (Rh[2] + mass * k.pose[i].t[2]));
+    });
+    return e;
+}
+
+}  // namespace ctga::chains

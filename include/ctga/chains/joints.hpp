@@ -1,0 +1,226 @@
+// Joints of a kinematic tree (paper §7: bodies joined by joints; Featherstone, "Rigid Body
+// Dynamics Algorithms" (2008), ch. 4). A joint is a type: how many configuration numbers it
+// reads (nq), how many velocity numbers (nv), its motion and its free directions.
+//
+// Each free direction k < nv is a screw (§3) in the body frame, the joint's motion subspace
+// column S_k. For a joint about or along a coordinate axis it is one blade known at compile
+// time, e1e2 for a revolute joint about z, e1e for a prismatic joint along x, so every formula
+// it enters (the joint velocity S q̇, the bracket v × S q̇, the momentum N S of the mass matrix,
+// the pairing τ = f(S) = f ∨ (Q0 ∧ S) of §5) is evaluated by the engine on that one blade:
+// the other five components are structural zeros and cost nothing.
+//
+//   revolute<axis::z>       rotation by q about the joint frame's z axis    nq = nv = 1
+//   prismatic<axis::x>      translation by q along x                        nq = nv = 1
+//   revolute_about          rotation about a unit axis u given at run time  nq = nv = 1
+//   prismatic_along         translation along a unit axis u (run time)      nq = nv = 1
+//   fixed                   no motion                                       nq = nv = 0
+//   floating                a motor g (§3) relative to the joint frame      nq = 8, nv = 6
+//
+// The body frame is the joint frame moved by the joint: its map in the parent's frame is
+// placement ∘ motion(q), a motor_map (R, t) (motor.hpp). The floating joint's velocity numbers
+// are the body's screw relative to the joint frame in body coordinates, (ω, v), and its
+// configuration the eight coefficients of the motor in ctga::motor's order; it moves as
+// dg/dt = ½ g s (§3, body-frame velocity).
+#pragma once
+
+#include <cmath>
+#include <concepts>
+#include <cstddef>
+#include <type_traits>
+
+#include "ctga/mechanics/algebras.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/support/inline.hpp"
+#include "ctga/support/math.hpp"
+
+namespace ctga::chains {
+
+enum class axis { x, y, z };
+
+namespace joint_detail {
+
+// The bivector of Cl(0,3,1) of a rotation about coordinate axis A and of a translation along
+// it (screw.hpp: s = ωx e2e3 + ωy e3e1 + ωz e1e2 + vx e1e + vy e2e + vz e3e).
+template <axis A>
+inline constexpr fixed_string rotation_blade = A == axis::x ? fixed_string{"e2e3"} : A == axis::y ? fixed_string{"e3e1"} : fixed_string{"e1e2"};
+template <axis A>
+inline constexpr fixed_string translation_blade = A == axis::x ? fixed_string{"e1e"} : A == axis::y ? fixed_string{"e2e"} : fixed_string{"e3e"};
+
+constexpr int index_of(axis a) { return a == axis::x ? 0 : a == axis::y ? 1 : 2; }
+
+// placement ∘ (rotation by angle q about coordinate axis k): R' = R Rₖ(q), t' = t. With
+// (a, b) = (k + 1, k + 2) mod 3, Rₖ(q) turns column a of R towards column b:
+// col_a' = c col_a + s col_b, col_b' = −s col_a + c col_b (12m 6a).
+template <int K, class T>
+CTGA_ALWAYS_INLINE constexpr motor_map<T> rotate_about_axis(const motor_map<T>& P, const T& c, const T& s) noexcept {
+    constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
+    motor_map<T> G = P;
+    for (int r = 0; r < 3; ++r) {
+        G.R[r][a] = c * P.R[r][a] + s * P.R[r][b];
+        G.R[r][b] = c * P.R[r][b] - s * P.R[r][a];
+    }
+    return G;
+}
+
+// R u for the parameters' unit axis (column combination), and R·R_u(q) by Rodrigues' formula
+// R_u(q) = 1 + s û + (1 − c) û².
+template <class T>
+constexpr mat3<T> rodrigues(const vec3<T>& u, const T& c, const T& s) noexcept {
+    const T d = T(1) - c;
+    return {{{c + d * u[0] * u[0], d * u[0] * u[1] - s * u[2], d * u[0] * u[2] + s * u[1]},
+             {d * u[1] * u[0] + s * u[2], c + d * u[1] * u[1], d * u[1] * u[2] - s * u[0]},
+             {d * u[2] * u[0] - s * u[1], d * u[2] * u[1] + s * u[0], c + d * u[2] * u[2]}}};
+}
+template <class T>
+constexpr mat3<T> multiply(const mat3<T>& A, const mat3<T>& B) noexcept {
+    mat3<T> C{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) C[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
+    return C;
+}
+
+struct no_parameters {};
+
+// A run-time unit axis: ‖u‖ = 1 to rounding (checked by the tree's parameters, tree.hpp).
+template <class T>
+struct unit_axis {
+    vec3<T> u{T(0), T(0), T(1)};
+};
+
+}  // namespace joint_detail
+
+// Rotation about a coordinate axis of the joint frame.
+template <axis A>
+struct revolute {
+    static constexpr std::size_t nq = 1, nv = 1;
+    template <class T>
+    using parameters = joint_detail::no_parameters;
+    // S: the unit rotation about the axis, one blade.
+    template <class T>
+    using subspace_type = cl031::mv<T, joint_detail::rotation_blade<A>>;
+    template <std::size_t K, class T>
+    static constexpr subspace_type<T> subspace(const parameters<T>&) noexcept {
+        return subspace_type<T>{T(1)};
+    }
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
+        using std::cos;
+        using std::sin;
+        return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, T(cos(q[0])), T(sin(q[0])));
+    }
+};
+
+// Translation along a coordinate axis of the joint frame: t' = t + q R e_k (3m 3a).
+template <axis A>
+struct prismatic {
+    static constexpr std::size_t nq = 1, nv = 1;
+    template <class T>
+    using parameters = joint_detail::no_parameters;
+    template <class T>
+    using subspace_type = cl031::mv<T, joint_detail::translation_blade<A>>;
+    template <std::size_t K, class T>
+    static constexpr subspace_type<T> subspace(const parameters<T>&) noexcept {
+        return subspace_type<T>{T(1)};
+    }
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
+        constexpr int k = joint_detail::index_of(A);
+        motor_map<T> G = placement;
+        for (int r = 0; r < 3; ++r) G.t[r] = placement.t[r] + q[0] * placement.R[r][k];
+        return G;
+    }
+};
+
+// Rotation about a unit axis u of the joint frame given at run time.
+struct revolute_about {
+    static constexpr std::size_t nq = 1, nv = 1;
+    template <class T>
+    using parameters = joint_detail::unit_axis<T>;
+    template <class T>
+    using subspace_type = cl031::mv<T, "e2e3", "e3e1", "e1e2">;
+    template <std::size_t K, class T>
+    static constexpr subspace_type<T> subspace(const parameters<T>& p) noexcept {
+        return subspace_type<T>{p.u[0], p.u[1], p.u[2]};
+    }
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>& p, const T* q) noexcept {
+        using std::cos;
+        using std::sin;
+        return {joint_detail::multiply(placement.R, joint_detail::rodrigues(p.u, T(cos(q[0])), T(sin(q[0])))), placement.t};
+    }
+};
+
+// Translation along a unit axis u of the joint frame given at run time: t' = t + q R u.
+struct prismatic_along {
+    static constexpr std::size_t nq = 1, nv = 1;
+    template <class T>
+    using parameters = joint_detail::unit_axis<T>;
+    template <class T>
+    using subspace_type = cl031::mv<T, "e1e", "e2e", "e3e">;
+    template <std::size_t K, class T>
+    static constexpr subspace_type<T> subspace(const parameters<T>& p) noexcept {
+        return subspace_type<T>{p.u[0], p.u[1], p.u[2]};
+    }
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>& p, const T* q) noexcept {
+        const vec3<T> d = linear3::apply(placement.R, p.u);
+        return {placement.R, {placement.t[0] + q[0] * d[0], placement.t[1] + q[0] * d[1], placement.t[2] + q[0] * d[2]}};
+    }
+};
+
+// A rigid connection: the body frame is the joint frame.
+struct fixed {
+    static constexpr std::size_t nq = 0, nv = 0;
+    template <class T>
+    using parameters = joint_detail::no_parameters;
+    template <class T>
+    using subspace_type = screw<T>;  // never formed: nv = 0
+    template <std::size_t K, class T>
+    static constexpr screw<T> subspace(const parameters<T>&) noexcept {
+        static_assert(K != K, "ctga::chains::fixed: a fixed joint has no free direction");
+        return {};
+    }
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T*) noexcept {
+        return placement;
+    }
+};
+
+// Six degrees of freedom: the body's motor g relative to the joint frame (a mobile or legged
+// base). Free direction k is the k-th blade of a screw, so S = 1 in body coordinates.
+struct floating {
+    static constexpr std::size_t nq = 8, nv = 6;
+    template <class T>
+    using parameters = joint_detail::no_parameters;
+    template <class T, std::size_t K>
+    using blade_screw = std::conditional_t<(K < 3), cl031::mv<T, joint_detail::rotation_blade<axis(K % 3)>>,
+                                           cl031::mv<T, joint_detail::translation_blade<axis(K % 3)>>>;
+    template <std::size_t K, class T>
+    static constexpr blade_screw<T, K> subspace(const parameters<T>&) noexcept {
+        return blade_screw<T, K>{T(1)};
+    }
+    // placement ∘ map_of(g): R' = R R_g, t' = R t_g + t.
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
+        const motor_map<T> J = map_of(motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]});
+        return {joint_detail::multiply(placement.R, J.R), linear3::add(linear3::apply(placement.R, J.t), placement.t)};
+    }
+};
+
+using revolute_x = revolute<axis::x>;
+using revolute_y = revolute<axis::y>;
+using revolute_z = revolute<axis::z>;
+using prismatic_x = prismatic<axis::x>;
+using prismatic_y = prismatic<axis::y>;
+using prismatic_z = prismatic<axis::z>;
+
+template <class J>
+concept joint = requires {
+    { J::nq } -> std::convertible_to<std::size_t>;
+    { J::nv } -> std::convertible_to<std::size_t>;
+    typename J::template parameters<double>;
+};
+
+}  // namespace ctga::chains

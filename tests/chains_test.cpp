@@ -1,0 +1,248 @@
+// Kinematic trees (include/ctga/chains/) against an independent reference: Featherstone's
+// algorithms on 6D spatial vectors with 3×3 rotations and Eigen (support/featherstone.hpp,
+// written without ctga). The trees' structures are types: each is drawn at compile time from a
+// seed (random_structure below), 1 to 30 bodies mixing every joint type, some on a floating base;
+// their parameters and states are drawn at run time, the same numbers given to both.
+// PARTS: 5
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <utility>
+
+#include <Eigen/Dense>
+
+#include <ctga/chains/algorithms.hpp>
+
+#include "support/catch.hpp"
+#include "support/featherstone.hpp"
+#include "support/parts.hpp"
+#include "support/random_tree.hpp"
+
+namespace {
+
+namespace ch = ctga::chains;
+namespace fs = ctga::test::featherstone;
+
+// ---- tree structures drawn at compile time ---------------------------------------------------
+
+constexpr std::uint64_t splitmix(std::uint64_t& s) {
+    std::uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+// joint kinds by number: 0–2 revolute about x, y, z; 3–5 prismatic along x, y, z; 6 revolute
+// about a run-time axis; 7 prismatic along one; 8 fixed; 9 floating (body 0 only)
+template <int K>
+using joint_of = std::conditional_t<
+    K == 0, ch::revolute_x,
+    std::conditional_t<
+        K == 1, ch::revolute_y,
+        std::conditional_t<
+            K == 2, ch::revolute_z,
+            std::conditional_t<
+                K == 3, ch::prismatic_x,
+                std::conditional_t<
+                    K == 4, ch::prismatic_y,
+                    std::conditional_t<
+                        K == 5, ch::prismatic_z,
+                        std::conditional_t<K == 6, ch::revolute_about,
+                                           std::conditional_t<K == 7, ch::prismatic_along,
+                                                              std::conditional_t<K == 8, ch::fixed, ch::floating>>>>>>>>>;
+
+template <std::uint64_t Seed, std::size_t N, bool Floating>
+struct random_structure {
+    struct spec {
+        std::array<int, N> parent{};
+        std::array<int, N> kind{};
+    };
+    static constexpr spec value = [] {
+        spec s;
+        std::uint64_t state = Seed;
+        for (std::size_t i = 0; i < N; ++i) {
+            const std::uint64_t r = splitmix(state);
+            // half the time the previous body (long chains), else any earlier body or the world
+            s.parent[i] = i == 0 ? -1 : (r & 1) ? static_cast<int>(i) - 1 : static_cast<int>((r >> 8) % (i + 1)) - 1;
+            s.kind[i] = (i == 0 && Floating) ? 9 : static_cast<int>((r >> 32) % 9);
+        }
+        return s;
+    }();
+    template <std::size_t... I>
+    static auto make(std::index_sequence<I...>) -> ch::tree<ch::link<value.parent[I], joint_of<value.kind[I]>>...>;
+    using type = decltype(make(std::make_index_sequence<N>{}));
+};
+
+// ---- one draw of parameters and state, given to both -------------------------------------------
+
+template <class Tree>
+struct draw {
+    ch::model<Tree> m;
+    fs::model ref;
+    ch::configuration<Tree> q{};
+    Eigen::VectorXd q_ref;
+    ch::joint_vector<Tree> qd{}, qdd{};
+    Eigen::VectorXd qd_ref, qdd_ref;
+};
+
+template <class J>
+constexpr int kind_number() {
+    if constexpr (std::is_same_v<J, ch::revolute_x>) return 0;
+    else if constexpr (std::is_same_v<J, ch::revolute_y>) return 1;
+    else if constexpr (std::is_same_v<J, ch::revolute_z>) return 2;
+    else if constexpr (std::is_same_v<J, ch::prismatic_x>) return 3;
+    else if constexpr (std::is_same_v<J, ch::prismatic_y>) return 4;
+    else if constexpr (std::is_same_v<J, ch::prismatic_z>) return 5;
+    else if constexpr (std::is_same_v<J, ch::revolute_about>) return 6;
+    else if constexpr (std::is_same_v<J, ch::prismatic_along>) return 7;
+    else if constexpr (std::is_same_v<J, ch::fixed>) return 8;
+    else return 9;
+}
+
+ctga::motor<double> motor_of(const fs::mat3& R, const fs::vec3& t) {
+    const Eigen::Quaterniond qr(R);
+    const ctga::rotor<double> r{qr.w(), qr.x(), qr.y(), qr.z()};
+    return ctga::rigid_motion(ctga::translation(t[0], t[1], t[2]), r);
+}
+
+template <class Tree>
+draw<Tree> make_draw(std::mt19937_64& rng) {
+    draw<Tree> d;
+    d.ref.gravity = fs::vec3(fs::uniform(rng, -2, 2), fs::uniform(rng, -2, 2), -9.81);
+    d.m.gravity = {d.ref.gravity[0], d.ref.gravity[1], d.ref.gravity[2]};
+    d.ref.bodies.resize(Tree::size);
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            using J = typename Tree::template joint_at<I>;
+            constexpr int k = kind_number<J>();
+            fs::body& b = d.ref.bodies[I];
+            b.parent = Tree::parent[I];
+            b.kind = k <= 2 || k == 6 ? fs::joint_kind::revolute
+                     : k <= 7         ? fs::joint_kind::prismatic
+                     : k == 8         ? fs::joint_kind::fixed
+                                      : fs::joint_kind::floating;
+            b.axis = k <= 5 ? fs::vec3::Unit(k % 3) : fs::random_unit_vec3(rng);
+            b.rotation = fs::random_rotation(rng);
+            b.translation = fs::uniform_vec3(rng, 0.5);
+            b.mass = fs::uniform(rng, 0.5, 2.0);
+            b.com = fs::uniform_vec3(rng, 0.3);
+            b.inertia_c = fs::random_inertia_c(rng, b.mass, 0.05, 0.3);
+            const ctga::mat3<double> Ic{{{b.inertia_c(0, 0), b.inertia_c(0, 1), b.inertia_c(0, 2)},
+                                         {b.inertia_c(1, 0), b.inertia_c(1, 1), b.inertia_c(1, 2)},
+                                         {b.inertia_c(2, 0), b.inertia_c(2, 1), b.inertia_c(2, 2)}}};
+            const auto link = ch::make_link<J>(motor_of(b.rotation, b.translation),
+                                               ctga::make_mass_properties(b.mass, ctga::vec3<double>{b.com[0], b.com[1], b.com[2]}, Ic),
+                                               ctga::vec3<double>{b.axis[0], b.axis[1], b.axis[2]});
+            REQUIRE(link);
+            d.m.template link<I>() = *link;
+        }(), ...);
+    }(std::make_index_sequence<Tree::size>{});
+    // the state: the reference's q for a floating joint is (x, y, z, qw, qx, qy, qz), ctga's the motor
+    d.q_ref.resize(d.ref.nq());
+    d.qd_ref.resize(d.ref.nv());
+    d.qdd_ref.resize(d.ref.nv());
+    for (int i = 0; i < static_cast<int>(Tree::size); ++i) {
+        const fs::body& b = d.ref[i];
+        const std::size_t qo = Tree::q_offset[static_cast<std::size_t>(i)];
+        const int qr = d.ref.q_index(i);
+        if (b.kind == fs::joint_kind::floating) {
+            const fs::mat3 R = fs::random_rotation(rng);
+            const fs::vec3 t = fs::uniform_vec3(rng, 0.5);
+            const Eigen::Quaterniond quat(R);
+            const ctga::motor<double> g = motor_of(R, t);
+            for (std::size_t k = 0; k < 8; ++k) d.q[qo + k] = g[k];
+            d.q_ref.template segment<3>(qr) = t;
+            d.q_ref.template segment<4>(qr + 3) << quat.w(), quat.x(), quat.y(), quat.z();
+        } else if (b.kind != fs::joint_kind::fixed) {
+            d.q[qo] = d.q_ref[qr] = fs::uniform(rng, -2, 2);
+        }
+    }
+    for (std::size_t k = 0; k < Tree::nv; ++k) {
+        d.qd[k] = d.qd_ref[static_cast<Eigen::Index>(k)] = fs::uniform(rng, -2, 2);
+        d.qdd[k] = d.qdd_ref[static_cast<Eigen::Index>(k)] = fs::uniform(rng, -2, 2);
+    }
+    return d;
+}
+
+// max |a − b| / max(1, max |b|)
+template <class A>
+double rel_error(const A& a, const Eigen::VectorXd& b) {
+    double e = 0, s = 1;
+    for (Eigen::Index i = 0; i < b.size(); ++i) {
+        e = std::max(e, std::abs(a[static_cast<std::size_t>(i)] - b[i]));
+        s = std::max(s, std::abs(b[i]));
+    }
+    return e / s;
+}
+template <class Tree>
+double rel_error(const ch::joint_matrix<Tree>& a, const Eigen::MatrixXd& b) {
+    double e = 0, s = 1;
+    for (Eigen::Index i = 0; i < b.rows(); ++i)
+        for (Eigen::Index j = 0; j < b.cols(); ++j) {
+            e = std::max(e, std::abs(a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] - b(i, j)));
+            s = std::max(s, std::abs(b(i, j)));
+        }
+    return e / s;
+}
+
+template <class Tree>
+void compare(std::uint64_t seed, int draws) {
+    std::mt19937_64 rng(seed);
+    for (int n = 0; n < draws; ++n) {
+        const draw<Tree> d = make_draw<Tree>(rng);
+        INFO("bodies " << Tree::size << ", nv " << Tree::nv << ", draw " << n);
+        // forward kinematics: poses, velocities, accelerations
+        const ch::kinematics<Tree> k = ch::forward_kinematics(d.m, d.q, d.qd, d.qdd);
+        const fs::kinematics kr = fs::fk(d.ref, d.q_ref, d.qd_ref, d.qdd_ref);
+        for (std::size_t i = 0; i < Tree::size; ++i) {
+            const auto& br = kr.bodies[i];
+            for (int r = 0; r < 3; ++r) {
+                CHECK(std::abs(k.pose[i].t[static_cast<std::size_t>(r)] - br.origin[r]) < 1e-12 * 10);
+                for (int c = 0; c < 3; ++c)
+                    CHECK(std::abs(k.pose[i].R[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] - br.rotation(r, c)) < 1e-12);
+            }
+            CHECK(rel_error(k.v[i], br.velocity) < 1e-12);
+            CHECK(rel_error(k.a[i], br.acceleration) < 1e-12);
+        }
+        // inverse dynamics, with and without external wrenches
+        CHECK(rel_error(ch::rnea(d.m, d.q, d.qd, d.qdd), fs::rnea(d.ref, d.q_ref, d.qd_ref, d.qdd_ref)) < 1e-12);
+        ch::body_wrenches<Tree> f{};
+        std::vector<fs::vec6> f_ref(Tree::size);
+        for (std::size_t i = 0; i < Tree::size; ++i)
+            for (std::size_t c = 0; c < 6; ++c) f[i][c] = f_ref[i][static_cast<int>(c)] = fs::uniform(rng, -1, 1);
+        CHECK(rel_error(ch::rnea(d.m, d.q, d.qd, d.qdd, f), fs::rnea(d.ref, d.q_ref, d.qd_ref, d.qdd_ref, f_ref)) < 1e-12);
+        // the mass matrix
+        CHECK(rel_error<Tree>(ch::crba(d.m, d.q), fs::crba(d.ref, d.q_ref)) < 1e-12);
+        // energies
+        const double ke = fs::kinetic_energy(d.ref, d.q_ref, d.qd_ref), pe = fs::potential_energy(d.ref, d.q_ref);
+        CHECK(std::abs(ch::kinetic_energy(d.m, d.q, d.qd) - ke) <= 1e-12 * std::max(1.0, std::abs(ke)));
+        CHECK(std::abs(ch::potential_energy(d.m, d.q) - pe) <= 1e-12 * std::max(1.0, std::abs(pe)));
+    }
+}
+
+}  // namespace
+
+// Part 0: small trees; 1 and 2: twelve bodies; 3 and 4: thirty bodies (each unit within the
+// compile budget: as one unit the file took 46 s and 1.6 GB with g++).
+#define CHAINS_CASE(part, name) TEST_CASE("chains: FK, RNEA, CRBA and energies agree with Featherstone's reference, " name)
+#if CTGA_TEST_PART_HOLDS(0)
+CHAINS_CASE(0, "1 to 7 bodies") {
+    compare<random_structure<1, 1, false>::type>(11, 20);
+    compare<random_structure<2, 2, false>::type>(12, 20);
+    compare<random_structure<3, 5, false>::type>(13, 20);
+    compare<random_structure<4, 7, true>::type>(14, 20);
+}
+#endif
+#if CTGA_TEST_PART_HOLDS(1)
+CHAINS_CASE(1, "12 bodies") { compare<random_structure<5, 12, false>::type>(15, 10); }
+#endif
+#if CTGA_TEST_PART_HOLDS(2)
+CHAINS_CASE(2, "12 bodies on a floating base") { compare<random_structure<6, 12, true>::type>(16, 10); }
+#endif
+#if CTGA_TEST_PART_HOLDS(3)
+CHAINS_CASE(3, "30 bodies") { compare<random_structure<7, 30, false>::type>(17, 5); }
+#endif
+#if CTGA_TEST_PART_HOLDS(4)
+CHAINS_CASE(4, "30 bodies on a floating base") { compare<random_structure<8, 30, true>::type>(18, 5); }
+#endif

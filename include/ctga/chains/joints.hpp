@@ -89,21 +89,41 @@ struct unit_axis {
     vec3<T> u{T(0), T(0), T(1)};
 };
 
-}  // namespace joint_detail
-
-// Rotation about a coordinate axis of the joint frame.
-template <axis A>
-struct revolute {
+// One degree of freedom along a single blade known at compile time (an axis joint): S = 1·Blade.
+template <fixed_string Blade>
+struct one_blade {
     static constexpr std::size_t nq = 1, nv = 1;
     template <class T>
-    using parameters = joint_detail::no_parameters;
-    // S: the unit rotation about the axis, one blade.
+    using parameters = no_parameters;
     template <class T>
-    using subspace_type = cl031::mv<T, joint_detail::rotation_blade<A>>;
+    using subspace_type = cl031::mv<T, Blade>;
     template <std::size_t K, class T>
     static constexpr subspace_type<T> subspace(const parameters<T>&) noexcept {
         return subspace_type<T>{T(1)};
     }
+};
+
+// One degree of freedom along a run-time unit axis u on three blades: S = u1 B1 + u2 B2 + u3 B3.
+template <fixed_string B1, fixed_string B2, fixed_string B3>
+struct unit_axis_dof {
+    static constexpr std::size_t nq = 1, nv = 1;
+    template <class T>
+    using parameters = unit_axis<T>;
+    template <class T>
+    using subspace_type = cl031::mv<T, B1, B2, B3>;
+    template <std::size_t K, class T>
+    static constexpr subspace_type<T> subspace(const parameters<T>& p) noexcept {
+        return subspace_type<T>{p.u[0], p.u[1], p.u[2]};
+    }
+};
+
+}  // namespace joint_detail
+
+// Rotation about a coordinate axis of the joint frame.
+template <axis A>
+struct revolute : joint_detail::one_blade<joint_detail::rotation_blade<A>> {
+    template <class T>
+    using parameters = joint_detail::no_parameters;  // (the base is dependent: named again here)
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
         using std::cos;
@@ -114,16 +134,9 @@ struct revolute {
 
 // Translation along a coordinate axis of the joint frame: t' = t + q R e_k (3m 3a).
 template <axis A>
-struct prismatic {
-    static constexpr std::size_t nq = 1, nv = 1;
+struct prismatic : joint_detail::one_blade<joint_detail::translation_blade<A>> {
     template <class T>
     using parameters = joint_detail::no_parameters;
-    template <class T>
-    using subspace_type = cl031::mv<T, joint_detail::translation_blade<A>>;
-    template <std::size_t K, class T>
-    static constexpr subspace_type<T> subspace(const parameters<T>&) noexcept {
-        return subspace_type<T>{T(1)};
-    }
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
         constexpr int k = joint_detail::index_of(A);
@@ -134,16 +147,7 @@ struct prismatic {
 };
 
 // Rotation about a unit axis u of the joint frame given at run time.
-struct revolute_about {
-    static constexpr std::size_t nq = 1, nv = 1;
-    template <class T>
-    using parameters = joint_detail::unit_axis<T>;
-    template <class T>
-    using subspace_type = cl031::mv<T, "e2e3", "e3e1", "e1e2">;
-    template <std::size_t K, class T>
-    static constexpr subspace_type<T> subspace(const parameters<T>& p) noexcept {
-        return subspace_type<T>{p.u[0], p.u[1], p.u[2]};
-    }
+struct revolute_about : joint_detail::unit_axis_dof<"e2e3", "e3e1", "e1e2"> {
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>& p, const T* q) noexcept {
         using std::cos;
@@ -153,16 +157,7 @@ struct revolute_about {
 };
 
 // Translation along a unit axis u of the joint frame given at run time: t' = t + q R u.
-struct prismatic_along {
-    static constexpr std::size_t nq = 1, nv = 1;
-    template <class T>
-    using parameters = joint_detail::unit_axis<T>;
-    template <class T>
-    using subspace_type = cl031::mv<T, "e1e", "e2e", "e3e">;
-    template <std::size_t K, class T>
-    static constexpr subspace_type<T> subspace(const parameters<T>& p) noexcept {
-        return subspace_type<T>{p.u[0], p.u[1], p.u[2]};
-    }
+struct prismatic_along : joint_detail::unit_axis_dof<"e1e", "e2e", "e3e"> {
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>& p, const T* q) noexcept {
         const vec3<T> d = linear3::apply(placement.R, p.u);

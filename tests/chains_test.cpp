@@ -212,6 +212,12 @@ void compare(std::uint64_t seed, int draws) {
         for (std::size_t i = 0; i < Tree::size; ++i)
             for (std::size_t c = 0; c < 6; ++c) f[i][c] = f_ref[i][static_cast<int>(c)] = fs::uniform(rng, -1, 1);
         CHECK(rel_error(ch::rnea(d.m, d.q, d.qd, d.qdd, f), fs::rnea(d.ref, d.q_ref, d.qd_ref, d.qdd_ref, f_ref)) < 1e-12);
+        // forward dynamics, with and without external wrenches
+        ch::joint_vector<Tree> tau{};
+        Eigen::VectorXd tau_ref(static_cast<Eigen::Index>(Tree::nv));
+        for (std::size_t c = 0; c < Tree::nv; ++c) tau[c] = tau_ref[static_cast<Eigen::Index>(c)] = fs::uniform(rng, -5, 5);
+        CHECK(rel_error(ch::aba(d.m, d.q, d.qd, tau), fs::aba(d.ref, d.q_ref, d.qd_ref, tau_ref)) < 1e-12);
+        CHECK(rel_error(ch::aba(d.m, d.q, d.qd, tau, f), fs::aba(d.ref, d.q_ref, d.qd_ref, tau_ref, f_ref)) < 1e-12);
         // the mass matrix
         CHECK(rel_error<Tree>(ch::crba(d.m, d.q), fs::crba(d.ref, d.q_ref)) < 1e-12);
         // energies
@@ -225,7 +231,7 @@ void compare(std::uint64_t seed, int draws) {
 
 // Part 0: small trees; 1 and 2: twelve bodies; 3 and 4: thirty bodies (each unit within the
 // compile budget: as one unit the file took 46 s and 1.6 GB with g++).
-#define CHAINS_CASE(part, name) TEST_CASE("chains: FK, RNEA, CRBA and energies agree with Featherstone's reference, " name)
+#define CHAINS_CASE(part, name) TEST_CASE("chains: FK, RNEA, ABA, CRBA and energies agree with Featherstone's reference, " name)
 #if CTGA_TEST_PART_HOLDS(0)
 CHAINS_CASE(0, "1 to 7 bodies") {
     compare<random_structure<1, 1, false>::type>(11, 20);

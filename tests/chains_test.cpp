@@ -186,6 +186,20 @@ double rel_error(const ch::joint_matrix<Tree>& a, const Eigen::MatrixXd& b) {
     return e / s;
 }
 
+template <class Tree, std::size_t I>
+void check_jacobians(const draw<Tree>& d) {
+    const ch::jacobian_matrix<Tree> Jb = ch::body_jacobian(d.m, d.q, ch::body<I>);
+    const ch::jacobian_matrix<Tree> Jw = ch::world_jacobian(d.m, d.q, ch::body<I>);
+    const Eigen::MatrixXd Jb_ref = fs::jacobian_body(d.ref, d.q_ref, static_cast<int>(I));
+    const Eigen::MatrixXd Jw_ref = fs::jacobian_world(d.ref, d.q_ref, static_cast<int>(I));
+    INFO("body " << I);
+    for (std::size_t c = 0; c < Tree::nv; ++c) {
+        const auto col = static_cast<Eigen::Index>(c);
+        CHECK(rel_error(Jb[c], Eigen::VectorXd(Jb_ref.col(col))) < 1e-12);
+        CHECK(rel_error(Jw[c], Eigen::VectorXd(Jw_ref.col(col))) < 1e-12);
+    }
+}
+
 template <class Tree>
 void compare(std::uint64_t seed, int draws) {
     std::mt19937_64 rng(seed);
@@ -220,6 +234,9 @@ void compare(std::uint64_t seed, int draws) {
         CHECK(rel_error(ch::aba(d.m, d.q, d.qd, tau, f), fs::aba(d.ref, d.q_ref, d.qd_ref, tau_ref, f_ref)) < 1e-12);
         // the mass matrix
         CHECK(rel_error<Tree>(ch::crba(d.m, d.q), fs::crba(d.ref, d.q_ref)) < 1e-12);
+        // Jacobians of the last body and of a middle one, in its own frame and in the world's
+        check_jacobians<Tree, Tree::size - 1>(d);
+        check_jacobians<Tree, Tree::size / 2>(d);
         // energies
         const double ke = fs::kinetic_energy(d.ref, d.q_ref, d.qd_ref), pe = fs::potential_energy(d.ref, d.q_ref);
         CHECK(std::abs(ch::kinetic_energy(d.m, d.q, d.qd) - ke) <= 1e-12 * std::max(1.0, std::abs(ke)));
@@ -231,7 +248,7 @@ void compare(std::uint64_t seed, int draws) {
 
 // Part 0: small trees; 1 and 2: twelve bodies; 3 and 4: thirty bodies (each unit within the
 // compile budget: as one unit the file took 46 s and 1.6 GB with g++).
-#define CHAINS_CASE(part, name) TEST_CASE("chains: FK, RNEA, ABA, CRBA and energies agree with Featherstone's reference, " name)
+#define CHAINS_CASE(part, name) TEST_CASE("chains: FK, RNEA, ABA, CRBA, Jacobians and energies agree with Featherstone's reference, " name)
 #if CTGA_TEST_PART_HOLDS(0)
 CHAINS_CASE(0, "1 to 7 bodies") {
     compare<random_structure<1, 1, false>::type>(11, 20);

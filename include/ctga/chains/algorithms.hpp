@@ -152,25 +152,28 @@ constexpr kinematics<Tree, T> forward_pass(const model<Tree, T>& m, const config
 
 // ---- forward kinematics (§4.1) -------------------------------------------------------------------
 
-// Every body's frame: its map in the parent's frame (X) and in the world (pose).
-template <class Tree, class T>
-[[nodiscard]] constexpr kinematics<Tree, T> forward_kinematics(const model<Tree, T>& m,
-                                                               const configuration<Tree, T>& q) noexcept {
-    return algorithm_detail::forward_pass<algorithm_detail::pass::poses>(m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
-}
-// … and every body's velocity screw, body frame.
-template <class Tree, class T>
-[[nodiscard]] constexpr kinematics<Tree, T> forward_kinematics(const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                                               const joint_vector<Tree, T>& qd) noexcept {
-    return algorithm_detail::forward_pass<algorithm_detail::pass::velocities>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
-}
-// … and every body's acceleration (the true spatial acceleration, gravity not included).
-template <class Tree, class T>
-[[nodiscard]] constexpr kinematics<Tree, T> forward_kinematics(const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                                               const joint_vector<Tree, T>& qd,
-                                                               const joint_vector<Tree, T>& qdd) noexcept {
-    return algorithm_detail::forward_pass<algorithm_detail::pass::accelerations>(m, q, qd.data(), qdd.data(), screw<T>{});
-}
+struct forward_kinematics_t {
+    // Every body's frame: its map in the parent's frame (X) and in the world (pose).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m,
+                                                                   const configuration<Tree, T>& q) const noexcept {
+        return algorithm_detail::forward_pass<algorithm_detail::pass::poses>(m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
+    }
+    // … and every body's velocity screw, body frame.
+    template <class Tree, class T>
+    [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                                   const joint_vector<Tree, T>& qd) const noexcept {
+        return algorithm_detail::forward_pass<algorithm_detail::pass::velocities>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+    }
+    // … and every body's acceleration (the true spatial acceleration, gravity not included).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                                   const joint_vector<Tree, T>& qd,
+                                                                   const joint_vector<Tree, T>& qdd) const noexcept {
+        return algorithm_detail::forward_pass<algorithm_detail::pass::accelerations>(m, q, qd.data(), qdd.data(), screw<T>{});
+    }
+};
+inline constexpr forward_kinematics_t forward_kinematics{};
 
 // ---- inverse dynamics: the recursive Newton–Euler algorithm (§5.3) -------------------------------
 
@@ -204,19 +207,22 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
 }
 }  // namespace algorithm_detail
 
-// τ = ID(q, q̇, q̈): the joint forces that give the bodies acceleration q̈ under gravity.
-template <class Tree, class T>
-[[nodiscard]] constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                                   const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd) noexcept {
-    return algorithm_detail::rnea(m, q, qd, qdd, static_cast<const body_wrenches<Tree, T>*>(nullptr));
-}
-// … with an external wrench acting on each body (body frame, about the body's origin).
-template <class Tree, class T>
-[[nodiscard]] constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                                   const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd,
-                                                   const body_wrenches<Tree, T>& f_ext) noexcept {
-    return algorithm_detail::rnea(m, q, qd, qdd, &f_ext);
-}
+struct rnea_t {
+    // τ = ID(q, q̇, q̈): the joint forces that give the bodies acceleration q̈ under gravity.
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_vector<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                       const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd) const noexcept {
+        return algorithm_detail::rnea(m, q, qd, qdd, static_cast<const body_wrenches<Tree, T>*>(nullptr));
+    }
+    // … with an external wrench acting on each body (body frame, about the body's origin).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_vector<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                       const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd,
+                                                       const body_wrenches<Tree, T>& f_ext) const noexcept {
+        return algorithm_detail::rnea(m, q, qd, qdd, &f_ext);
+    }
+};
+inline constexpr rnea_t rnea{};
 
 // ---- the mass matrix: the composite rigid body algorithm (§6.2) ----------------------------------
 //
@@ -257,29 +263,32 @@ CTGA_ALWAYS_INLINE constexpr void crba_column(const model<Tree, T>& m, const std
 }
 }  // namespace algorithm_detail
 
-template <class Tree, class T>
-[[nodiscard]] constexpr joint_matrix<Tree, T> crba(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
-    using namespace algorithm_detail;
-    std::array<motor_map<T>, Tree::size> X;
-    forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
-    std::array<body_inertia<T>, Tree::size> Nc;
-    forward<Tree::size>([&](auto body) { Nc[decltype(body)::value] = m.template link<decltype(body)::value>().inertia; });
-    backward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        if constexpr (p >= 0) Nc[p] = Nc[p] + transform(X[i], Nc[i]);
-    });
-    joint_matrix<Tree, T> H{};
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        using J = typename Tree::template joint_at<i>;
-        if constexpr (J::nv > 0)
-            [&]<std::size_t... K>(std::index_sequence<K...>) {
-                (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
-            }(std::make_index_sequence<J::nv>{});
-    });
-    return H;
-}
+struct crba_t {
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q) const noexcept {
+        using namespace algorithm_detail;
+        std::array<motor_map<T>, Tree::size> X;
+        forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
+        std::array<body_inertia<T>, Tree::size> Nc;
+        forward<Tree::size>([&](auto body) { Nc[decltype(body)::value] = m.template link<decltype(body)::value>().inertia; });
+        backward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            constexpr int p = Tree::parent[i];
+            if constexpr (p >= 0) Nc[p] = Nc[p] + transform(X[i], Nc[i]);
+        });
+        joint_matrix<Tree, T> H{};
+        forward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            using J = typename Tree::template joint_at<i>;
+            if constexpr (J::nv > 0)
+                [&]<std::size_t... K>(std::index_sequence<K...>) {
+                    (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
+                }(std::make_index_sequence<J::nv>{});
+        });
+        return H;
+    }
+};
+inline constexpr crba_t crba{};
 
 // ---- forward dynamics: the articulated body algorithm (§7.3) ------------------------------------
 //
@@ -377,50 +386,169 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
 }
 }  // namespace algorithm_detail
 
-// q̈ = FD(q, q̇, τ): the joint accelerations the forces τ give under gravity.
-template <class Tree, class T>
-[[nodiscard]] constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                                  const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau) noexcept {
-    return algorithm_detail::aba(m, q, qd, tau, static_cast<const body_wrenches<Tree, T>*>(nullptr));
-}
-// … with an external wrench acting on each body (body frame, about the body's origin).
-template <class Tree, class T>
-[[nodiscard]] constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                                  const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
-                                                  const body_wrenches<Tree, T>& f_ext) noexcept {
-    return algorithm_detail::aba(m, q, qd, tau, &f_ext);
-}
+struct aba_t {
+    // q̈ = FD(q, q̇, τ): the joint accelerations the forces τ give under gravity.
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_vector<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                      const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau) const noexcept {
+        return algorithm_detail::aba(m, q, qd, tau, static_cast<const body_wrenches<Tree, T>*>(nullptr));
+    }
+    // … with an external wrench acting on each body (body frame, about the body's origin).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_vector<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                      const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
+                                                      const body_wrenches<Tree, T>& f_ext) const noexcept {
+        return algorithm_detail::aba(m, q, qd, tau, &f_ext);
+    }
+};
+inline constexpr aba_t aba{};
 
 // ---- energies ----------------------------------------------------------------------------------
 
-// ½ Σ v_i ∨ … : the kinetic energy ½ s̄ ∨ (N ∧ s) of §5, summed over the bodies.
-template <class Tree, class T>
-[[nodiscard]] constexpr T kinetic_energy(const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                         const joint_vector<Tree, T>& qd) noexcept {
-    const kinematics<Tree, T> k = forward_kinematics(m, q, qd);
-    T e = T(0);
-    algorithm_detail::forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        e = e + ctga::kinetic_energy(m.template link<i>().inertia, k.v[i]);
-    });
-    return e;
-}
+struct kinetic_energy_t {
+    // ½ Σ v_i ∨ … : the kinetic energy ½ s̄ ∨ (N ∧ s) of §5, summed over the bodies.
+    template <class Tree, class T>
+    [[nodiscard]] constexpr T operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                             const joint_vector<Tree, T>& qd) const noexcept {
+        const kinematics<Tree, T> k = forward_kinematics(m, q, qd);
+        T e = T(0);
+        algorithm_detail::forward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            e = e + ctga::kinetic_energy(m.template link<i>().inertia, k.v[i]);
+        });
+        return e;
+    }
+};
+inline constexpr kinetic_energy_t kinetic_energy{};
 
-// −Σ m_i g·c_i, c_i the world position of body i's centre of mass: with the body's pose (R, t)
-// and h = m c, m_i c_i = R h + m t.
+struct potential_energy_t {
+    // −Σ m_i g·c_i, c_i the world position of body i's centre of mass: with the body's pose (R, t)
+    // and h = m c, m_i c_i = R h + m t.
+    template <class Tree, class T>
+    [[nodiscard]] constexpr T operator()(const model<Tree, T>& m, const configuration<Tree, T>& q) const noexcept {
+        const kinematics<Tree, T> k = forward_kinematics(m, q);
+        T e = T(0);
+        algorithm_detail::forward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            const body_inertia<T>& N = m.template link<i>().inertia;
+            const vec3<T> Rh = linear3::apply(k.pose[i].R, N.first_moment());
+            const T mass = N.mass();
+            e = e - (m.gravity[0] * (Rh[0] + mass * k.pose[i].t[0]) + m.gravity[1] * (Rh[1] + mass * k.pose[i].t[1]) +
+                     m.gravity[2] * (Rh[2] + mass * k.pose[i].t[2]));
+        });
+        return e;
+    }
+};
+inline constexpr potential_energy_t potential_energy{};
+
+
+// ---- the geometric Jacobian of a body's frame --------------------------------------------------
+//
+// v_I = J q̇: column k of joint j is the velocity body I has when only q̇_k moves, S_jk seen from
+// body I's frame (world: from the world's). For j on the path from I to the root it is S_jk moved
+// out of body j, g_j S_jk g_j* = transform(pose_j, S_jk) (§3), then into body I; for any other
+// joint it is zero. The body is a compile-time index: chains::body<I>.
+
+template <std::size_t I>
+inline constexpr std::integral_constant<std::size_t, I> body{};
+
+template <class Tree, class T = double>
+using jacobian_matrix = std::array<screw<T>, Tree::nv>;  // column k: a screw
+
+namespace algorithm_detail {
+template <std::size_t J, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void world_columns(const model<Tree, T>& m, const kinematics<Tree, T>& k,
+                                                jacobian_matrix<Tree, T>& out) noexcept {
+    using Jt = typename Tree::template joint_at<J>;
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+        ((out[Tree::v_offset[J] + K] = transform(k.pose[J], screw<T>(Jt::template subspace<K, T>(m.template link<J>().joint)))),
+         ...);
+    }(std::make_index_sequence<Jt::nv>{});
+    if constexpr (Tree::parent[J] >= 0) world_columns<static_cast<std::size_t>(Tree::parent[J])>(m, k, out);
+}
+}  // namespace algorithm_detail
+
+struct world_jacobian_t {
+    // Velocity of body I in world coordinates (ω, v of the point at the world origin) = J q̇.
+    template <class Tree, class T, std::size_t I>
+    [[nodiscard]] constexpr jacobian_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                                std::integral_constant<std::size_t, I>) const noexcept {
+        static_assert(I < Tree::size, "ctga::chains::world_jacobian: no such body in the tree");
+        jacobian_matrix<Tree, T> out{};
+        algorithm_detail::world_columns<I>(m, forward_kinematics(m, q), out);
+        return out;
+    }
+};
+inline constexpr world_jacobian_t world_jacobian{};
+
+struct body_jacobian_t {
+    // Velocity of body I in its own frame (the v of forward_kinematics) = J q̇.
+    template <class Tree, class T, std::size_t I>
+    [[nodiscard]] constexpr jacobian_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                                std::integral_constant<std::size_t, I>) const noexcept {
+        static_assert(I < Tree::size, "ctga::chains::body_jacobian: no such body in the tree");
+        const kinematics<Tree, T> k = forward_kinematics(m, q);
+        jacobian_matrix<Tree, T> out{};
+        algorithm_detail::world_columns<I>(m, k, out);
+        for (std::size_t c = 0; c < Tree::nv; ++c)
+            if (Tree::supports(Tree::body_of_dof[c], I)) out[c] = transform_inverse(k.pose[I], out[c]);
+        return out;
+    }
+};
+inline constexpr body_jacobian_t body_jacobian{};
+
+// ---- checked calls -----------------------------------------------------------------------------
+//
+//   auto qdd = chains::checked_call(chains::aba, m, q, qd, tau);   // checked<joint_vector>
+//   if (!qdd) std::puts(ctga::describe(qdd.error));
+//
+// The algorithms above are plain arithmetic: a NaN in q gives a NaN in τ. checked_call runs one
+// on inputs it has checked and checks its result, so nothing non-finite passes for an answer:
+//   non_finite    a NaN or infinity in q, q̇, q̈, τ, the wrenches or gravity, or in the result
+//   not_a_motor   a floating joint's configuration with a zero rotor part (no rigid motion)
+// (A model's inertias and axes were checked when it was built: make_link.)
+
+namespace algorithm_detail {
+template <class T>
+constexpr bool finite_all(const T& x) noexcept {
+    if constexpr (std::is_arithmetic_v<T>) return is_finite(x);
+    else if constexpr (requires { x.R; x.t; }) return finite_all(x.R) && finite_all(x.t);
+    else if constexpr (requires { x.X; x.pose; x.v; x.a; }) return finite_all(x.X) && finite_all(x.pose) && finite_all(x.v) && finite_all(x.a);
+    else if constexpr (requires { x.links; x.gravity; }) return finite_all(x.gravity);
+    else if constexpr (multivector_type<T>) {
+        for (std::size_t i = 0; i < T::size(); ++i)
+            if (!is_finite(x[i])) return false;
+        return true;
+    } else {
+        for (const auto& e : x)
+            if (!finite_all(e)) return false;
+        return true;
+    }
+}
+// A floating joint's eight numbers are a motor when its rotor part is not zero (map_of reads any
+// such motor as the rigid motion it encodes).
 template <class Tree, class T>
-[[nodiscard]] constexpr T potential_energy(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
-    const kinematics<Tree, T> k = forward_kinematics(m, q);
-    T e = T(0);
-    algorithm_detail::forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        const body_inertia<T>& N = m.template link<i>().inertia;
-        const vec3<T> Rh = linear3::apply(k.pose[i].R, N.first_moment());
-        const T mass = N.mass();
-        e = e - (m.gravity[0] * (Rh[0] + mass * k.pose[i].t[0]) + m.gravity[1] * (Rh[1] + mass * k.pose[i].t[1]) +
-                 m.gravity[2] * (Rh[2] + mass * k.pose[i].t[2]));
-    });
-    return e;
+constexpr error_code check_configuration(const std::array<T, Tree::nq>& q) noexcept {
+    if (!finite_all(q)) return error_code::non_finite;
+    for (std::size_t i = 0; i < Tree::size; ++i)
+        if (Tree::nq_of[i] == 8) {
+            const T* g = q.data() + Tree::q_offset[i];
+            if (!(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g[3] * g[3] > T(0))) return error_code::not_a_motor;
+        }
+    return error_code::none;
+}
+}  // namespace algorithm_detail
+
+template <class Algorithm, class Tree, class T, class... Args>
+[[nodiscard]] constexpr auto checked_call(const Algorithm& algorithm, const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                          const Args&... args) noexcept -> checked<decltype(algorithm(m, q, args...))> {
+    using result = decltype(algorithm(m, q, args...));
+    if (!algorithm_detail::finite_all(m)) return {result{}, error_code::non_finite};
+    if (const error_code e = algorithm_detail::check_configuration<Tree>(q); e != error_code::none) return {result{}, e};
+    if (!(algorithm_detail::finite_all(args) && ...)) return {result{}, error_code::non_finite};
+    const result r = algorithm(m, q, args...);
+    if (!algorithm_detail::finite_all(r)) return {result{}, error_code::non_finite};
+    return {r, error_code::none};
 }
 
 }  // namespace ctga::chains

@@ -68,6 +68,13 @@ struct tree {
     }();
     static constexpr std::size_t nq = q_offset[size];
     static constexpr std::size_t nv = v_offset[size];
+    // the body whose joint velocity number k is
+    static constexpr auto body_of_dof = [] {
+        std::array<std::size_t, nv> b{};
+        for (std::size_t i = 0; i < size; ++i)
+            for (std::size_t k = v_offset[i]; k < v_offset[i + 1]; ++k) b[k] = i;
+        return b;
+    }();
 
     // true when body j is body i or one of its ancestors
     static constexpr bool supports(std::size_t j, std::size_t i) {

@@ -9,10 +9,12 @@
 //   mechanics/    the paper: algebras, screw, coscrew, motor, inertia, dynamics, convert
 //   integrators/  methods stepping any motion model
 //   scenes/       body kinds, scenes of many bodies, batches
-//   chains/       kinematic trees: joints, the tree type, FK, RNEA, CRBA
+//   chains/       kinematic trees: joints, the tree type, FK, RNEA, CRBA, ABA, Jacobians,
+//                 the tree as an integrator model (motion.hpp)
 #pragma once
 
 #include "ctga/chains/algorithms.hpp"
+#include "ctga/chains/motion.hpp"
 #include "ctga/core.hpp"
 #include "ctga/integrators/integrate.hpp"
 #include "ctga/integrators/methods.hpp"

@@ -1,0 +1,153 @@
+// A kinematic tree as a model for the integrators (integrators/model.hpp), so that a chain is
+// simulated with the same calls as a body or a scene:
+//
+//   chains::tree_motion<arm> sim{m};                       // passive: τ = 0
+//   auto run = ctga::integrate(ctga::lie_rk4{}, sim, {q0, qd0}, 1e-3, 10'000);
+//
+// The state is (q, q̇). The configuration space is a product of groups: the real line for each
+// revolute or prismatic joint, and for a floating joint the group of motors (§3), whose
+// velocity is the body-frame screw s with dg/dt = ½ g s. In the model's terms:
+//   motor_rate(q, q̇)   q̇ for a 1-dof joint, ½ g s for a floating one
+//   exp(z)             z for a 1-dof joint, e^{z/2} (§3) for a floating one
+//   compose(a, b)      a + b,                 the motor product a b
+//   bracket(a, b)      0,                     the Lie bracket of the two screws (§3)
+//   renormalize(q)     each floating motor renormalised
+// so lie_rk4 and implicit_midpoint move a floating base on the group (its motor stays a unit
+// motor), rk4 moves it in the flat coordinates and renormalises; acceleration(q, q̇) is
+// forward dynamics by the articulated body algorithm with the actuation's τ(q, q̇).
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "ctga/chains/algorithms.hpp"
+#include "ctga/integrators/model.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/support/math.hpp"
+
+namespace ctga::chains {
+
+// N numbers with the vector-space operations the integrators use (x + c y, x − y, c x).
+template <std::size_t N, class T = double>
+struct coordinates {
+    std::array<T, N> x{};
+
+    [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return x[i]; }
+    [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return x[i]; }
+    [[nodiscard]] friend constexpr coordinates operator+(const coordinates& a, const coordinates& b) noexcept {
+        coordinates out;
+        for (std::size_t i = 0; i < N; ++i) out.x[i] = a.x[i] + b.x[i];
+        return out;
+    }
+    [[nodiscard]] friend constexpr coordinates operator-(const coordinates& a, const coordinates& b) noexcept {
+        coordinates out;
+        for (std::size_t i = 0; i < N; ++i) out.x[i] = a.x[i] - b.x[i];
+        return out;
+    }
+    [[nodiscard]] friend constexpr coordinates operator*(const T& c, const coordinates& a) noexcept {
+        coordinates out;
+        for (std::size_t i = 0; i < N; ++i) out.x[i] = c * a.x[i];
+        return out;
+    }
+};
+
+// No joint forces: the tree moves under gravity alone.
+struct passive {
+    template <std::size_t NQ, std::size_t NV, class T>
+    [[nodiscard]] constexpr std::array<T, NV> operator()(const std::array<T, NQ>&, const std::array<T, NV>&) const noexcept {
+        return {};
+    }
+};
+
+namespace motion_detail {
+template <class T>
+constexpr motor<T> motor_at(const T* q) noexcept {
+    return motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]};
+}
+template <class T>
+constexpr screw<T> screw_at(const T* v) noexcept {
+    return screw<T>{v[0], v[1], v[2], v[3], v[4], v[5]};
+}
+template <class X>
+constexpr void put(const X& x, std::size_t n, auto* out) noexcept {
+    for (std::size_t i = 0; i < n; ++i) out[i] = x[i];
+}
+}  // namespace motion_detail
+
+template <class Tree, class T = double, class Actuation = passive>
+struct tree_motion {
+    using scalar_type = T;
+    using motor_type = coordinates<Tree::nq, T>;  // q
+    using screw_type = coordinates<Tree::nv, T>;  // q̇ (a floating base's: its body-frame screw)
+    static constexpr frame velocity_frame = frame::body;
+
+    model<Tree, T> m;
+    Actuation actuation{};  // τ(q, q̇), joint forces
+
+    [[nodiscard]] constexpr screw_type acceleration(const motor_type& q, const screw_type& qd) const noexcept {
+        return {aba(m, q.x, qd.x, actuation(q.x, qd.x))};
+    }
+
+    [[nodiscard]] constexpr motor_type motor_rate(const motor_type& q, const screw_type& qd) const noexcept {
+        return per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t vo, motor_type& out) {
+            using J = decltype(joint);
+            if constexpr (J::nq == 8) motion_detail::put(motor<T>(half * motion_detail::motor_at(&q[qo]) * motion_detail::screw_at(&qd[vo])), 8, &out[qo]);
+            else if constexpr (J::nq == 1) out[qo] = qd[vo];
+        });
+    }
+    [[nodiscard]] constexpr motor_type exp(const screw_type& z) const noexcept {
+        return per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t vo, motor_type& out) {
+            using J = decltype(joint);
+            if constexpr (J::nq == 8) motion_detail::put(ctga::exp(motion_detail::screw_at(&z[vo])), 8, &out[qo]);
+            else if constexpr (J::nq == 1) out[qo] = z[vo];
+        });
+    }
+    [[nodiscard]] constexpr motor_type compose(const motor_type& a, const motor_type& b) const noexcept {
+        return per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t, motor_type& out) {
+            using J = decltype(joint);
+            if constexpr (J::nq == 8) motion_detail::put(motor<T>(motion_detail::motor_at(&a[qo]) * motion_detail::motor_at(&b[qo])), 8, &out[qo]);
+            else if constexpr (J::nq == 1) out[qo] = a[qo] + b[qo];
+        });
+    }
+    [[nodiscard]] constexpr screw_type bracket(const screw_type& a, const screw_type& b) const noexcept {
+        return per_joint<screw_type>([&](auto joint, std::size_t, std::size_t vo, screw_type& out) {
+            using J = decltype(joint);
+            if constexpr (J::nv == 6) motion_detail::put(ctga::bracket(motion_detail::screw_at(&a[vo]), motion_detail::screw_at(&b[vo])), 6, &out[vo]);
+        });
+    }
+    [[nodiscard]] constexpr motor_type renormalize(const motor_type& q) const noexcept {
+        motor_type out = q;
+        per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t, motor_type&) {
+            if constexpr (decltype(joint)::nq == 8) motion_detail::put(ctga::renormalize(motion_detail::motor_at(&q[qo])), 8, &out[qo]);
+        });
+        return out;
+    }
+    [[nodiscard]] constexpr bool finite(const motor_type& q, const screw_type& qd) const noexcept {
+        return algorithm_detail::finite_all(q.x) && algorithm_detail::finite_all(qd.x);
+    }
+    [[nodiscard]] constexpr T magnitude(const screw_type& z) const noexcept {
+        T out = T(0);
+        for (const T& c : z.x) out = (c < T(0) ? -c : c) > out ? (c < T(0) ? -c : c) : out;
+        return out;
+    }
+
+    // The total energy: kinetic plus potential in the model's gravity.
+    [[nodiscard]] constexpr T energy(const motor_type& q, const screw_type& qd) const noexcept {
+        return kinetic_energy(m, q.x, qd.x) + potential_energy(m, q.x);
+    }
+
+private:
+    // f(joint, q offset, v offset, out) for every body's joint, in body order.
+    template <class Out, class F>
+    static constexpr Out per_joint(F&& f) noexcept {
+        Out out{};
+        algorithm_detail::forward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            f(typename Tree::template joint_at<i>{}, Tree::q_offset[i], Tree::v_offset[i], out);
+        });
+        return out;
+    }
+};
+
+}  // namespace ctga::chains

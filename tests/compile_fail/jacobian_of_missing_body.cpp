@@ -1,0 +1,12 @@
+// EXPECT: no such body in the tree
+// The Jacobian of body 3 of a tree with bodies 0, 1 and 2.
+#include <ctga/chains/algorithms.hpp>
+
+using arm = ctga::chains::tree<ctga::chains::link<-1, ctga::chains::revolute_z>,
+                               ctga::chains::link<0, ctga::chains::revolute_y>,
+                               ctga::chains::link<1, ctga::chains::revolute_y>>;
+int main() {
+    const ctga::chains::model<arm> m{};
+    const auto J = ctga::chains::body_jacobian(m, ctga::chains::configuration<arm>{}, ctga::chains::body<3>);
+    return J[0][0] > 0;
+}

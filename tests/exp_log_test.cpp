@@ -545,3 +545,31 @@ TEST_CASE("from_homogeneous rejects what is not a rigid motion, with the reason"
 }
 
 }  // namespace
+
+// ctga::math::cos_sin in constant evaluation (a reduced Taylor series: what the revolute joints
+// and exp use when the compiler evaluates them) against std::cos and std::sin at run time.
+TEST_CASE("math::cos_sin: constant evaluation agrees with std::cos and std::sin to a few ulps") {
+    constexpr int n = 401;
+    constexpr auto x_at = [](int i) { return -60.0 + 0.3 * i + 1e-3 * (i % 7); };
+    constexpr auto table = [&] {
+        std::array<ctga::math::cos_sin_pair<double>, n> out{};
+        for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = ctga::math::cos_sin(x_at(i));
+        return out;
+    }();
+    constexpr auto table_f = [&] {
+        std::array<ctga::math::cos_sin_pair<float>, n> out{};
+        for (int i = 0; i < n; ++i) out[static_cast<std::size_t>(i)] = ctga::math::cos_sin(static_cast<float>(x_at(i)));
+        return out;
+    }();
+    for (int i = 0; i < n; ++i) {
+        const double x = x_at(i);
+        const auto& cs = table[static_cast<std::size_t>(i)];
+        INFO("x = " << x);
+        CHECK(std::abs(cs.cos - std::cos(x)) <= 4e-16 * (1 + std::abs(x) / 8));
+        CHECK(std::abs(cs.sin - std::sin(x)) <= 4e-16 * (1 + std::abs(x) / 8));
+        const float xf = static_cast<float>(x);
+        CHECK(std::abs(table_f[static_cast<std::size_t>(i)].cos - std::cos(xf)) <= 3e-7f * (1 + std::abs(xf) / 8));
+        CHECK(std::abs(table_f[static_cast<std::size_t>(i)].sin - std::sin(xf)) <= 3e-7f * (1 + std::abs(xf) / 8));
+    }
+    static_assert(ctga::math::cos_sin(0.0).cos == 1.0 && ctga::math::cos_sin(0.0).sin == 0.0);
+}

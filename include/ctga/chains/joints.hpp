@@ -126,9 +126,8 @@ struct revolute : joint_detail::one_blade<joint_detail::rotation_blade<A>> {
     using parameters = joint_detail::no_parameters;  // (the base is dependent: named again here)
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
-        using std::cos;
-        using std::sin;
-        return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, T(cos(q[0])), T(sin(q[0])));
+        const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
+        return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, cs.cos, cs.sin);
     }
 };
 
@@ -150,9 +149,8 @@ struct prismatic : joint_detail::one_blade<joint_detail::translation_blade<A>> {
 struct revolute_about : joint_detail::unit_axis_dof<"e2e3", "e3e1", "e1e2"> {
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>& p, const T* q) noexcept {
-        using std::cos;
-        using std::sin;
-        return {joint_detail::multiply(placement.R, joint_detail::rodrigues(p.u, T(cos(q[0])), T(sin(q[0])))), placement.t};
+        const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
+        return {joint_detail::multiply(placement.R, joint_detail::rodrigues(p.u, cs.cos, cs.sin)), placement.t};
     }
 };
 

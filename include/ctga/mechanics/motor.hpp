@@ -40,9 +40,7 @@ using motor = cl031::mv<T, "1", "e2e3", "e3e1", "e1e2", "ee1e2e3", "e1e", "e2e",
 // The rotation by angle θ about the unit axis u (right-hand rule).
 template <class T>
 [[nodiscard]] constexpr rotor<T> rotation(const T& ux, const T& uy, const T& uz, const T& theta) noexcept {
-    using std::cos;
-    using std::sin;
-    const T c = cos(theta / T(2)), s = sin(theta / T(2));
+    const T c = math::cos(theta / T(2)), s = math::sin(theta / T(2));
     return rotor<T>{c, s * ux, s * uy, s * uz};
 }
 
@@ -275,10 +273,8 @@ template <class T>
         }
         return {T(1) + phi2 * su, cu};
     }
-    using std::cos;
-    using std::sin;
-    const T s = sin(phi) / phi;
-    return {s, (cos(phi) - s) / phi2};  // no cancellation at φ ≥ 1: cos φ − sinc φ ≤ −0.30
+    const T s = math::sin(phi) / phi;
+    return {s, (math::cos(phi) - s) / phi2};  // no cancellation at φ ≥ 1: cos φ − sinc φ ≤ −0.30
 }
 
 }  // namespace motor_detail
@@ -289,7 +285,6 @@ template <class T>
 // 1 + ½(vx e1e + vy e2e + vz e3e) exactly. θ is not reduced: exp(z) for θ and θ + 4π agree.
 template <class T>
 [[nodiscard]] constexpr motor<T> exp(const screw<T>& z) noexcept {
-    using std::cos;
     const T ax = z[0] / T(2), ay = z[1] / T(2), az = z[2] / T(2);  // a = ω/2
     const T bx = z[3] / T(2), by = z[4] / T(2), bz = z[5] / T(2);  // b = v/2
     const T phi2 = ax * ax + ay * ay + az * az;
@@ -297,7 +292,7 @@ template <class T>
     const auto [sinc, c] = motor_detail::sinc_and_c(phi, phi2);
     const T ab = ax * bx + ay * by + az * bz;
     const T cab = c * ab;
-    return motor<T>{cos(phi),          sinc * ax,         sinc * ay,         sinc * az, -sinc * ab,
+    return motor<T>{math::cos(phi),    sinc * ax,         sinc * ay,         sinc * az, -sinc * ab,
                     sinc * bx + cab * ax, sinc * by + cab * ay, sinc * bz + cab * az};
 }
 

@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Install the Debian packages ctga's build needs, only those missing.
 #   bash tools/deps.sh                 (tools/demo.sh and tools/test.sh call it; clang is for
-#                                      tools/test.sh's second build tree, Debian 12's clang 14)
+#                                      tools/test.sh's second build tree, Debian 12's clang 14;
+#                                      python3 runs tools/urdf_to_ctga.py for the tests)
 #   bash tools/deps.sh extra-pkg ...   the same, plus these (tools/bench.sh: valgrind, matplotlib)
 # CTGA_SKIP_DEPS=1 skips the check (e.g. on non-Debian systems).
 set -euo pipefail
 
-packages=(g++ clang cmake ninja-build libboost-dev catch2 libbenchmark-dev libeigen3-dev time "$@")
+packages=(g++ clang cmake ninja-build libboost-dev catch2 libbenchmark-dev libeigen3-dev time python3 "$@")
 
 if [[ "${CTGA_SKIP_DEPS:-0}" == 1 ]]; then
     exit 0

@@ -1,0 +1,216 @@
+// The kinematic trees of the chain benchmarks, each given once as plain numbers (description)
+// and built from them for both implementations: ctga::chains (the tree a type) and the
+// hand-written spatial code (bench/spatial_chains.hpp, the tree run-time data).
+//
+//   arm7       7 revolute joints about z, y, z, y, z, y, z, frames 0.3 m apart (a 7-dof arm)
+//   chain30    30 revolute joints cycling z, y, x, frames 0.1 m apart
+//   tree       a floating base with four legs of three revolute joints (hip x, thigh y, knee y)
+//   chain<N>   N revolute joints cycling z, y, x (the scaling benchmarks, 1 … 64 bodies)
+//
+// Masses, centres of mass and inertia tensors are drawn once from a fixed seed: full tensors,
+// centres of mass off the joint axes, so no product is structurally zero by accident of the data.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <random>
+#include <stdexcept>
+#include <utility>
+
+#include <ctga/ctga.hpp>
+
+#include "spatial_chains.hpp"
+
+namespace bench::chains {
+
+namespace ch = ctga::chains;
+namespace sp = spatial::chains;
+
+struct body_description {
+    int parent;
+    sp::joint_kind kind;
+    std::array<double, 3> t;                   // joint frame in the parent's: translation (rotation: identity)
+    double mass;
+    std::array<double, 3> com;
+    std::array<std::array<double, 3>, 3> Ic;  // about the centre of mass
+};
+
+template <std::size_t N>
+using description = std::array<body_description, N>;
+
+// Mass properties from principal second moments m g² (triangle inequality holds), turned about a
+// random axis.
+inline void random_inertia(std::mt19937_64& rng, body_description& b) {
+    std::uniform_real_distribution<double> u(-1, 1);
+    b.mass = 1.5 + u(rng);
+    const double g[3] = {0.05 + 0.03 * u(rng), 0.06 + 0.03 * u(rng), 0.04 + 0.02 * u(rng)};
+    const double s[3] = {b.mass * g[0] * g[0], b.mass * g[1] * g[1], b.mass * g[2] * g[2]};
+    const double d[3] = {s[1] + s[2], s[0] + s[2], s[0] + s[1]};
+    double ax[3] = {u(rng), u(rng), 1};
+    const double n = std::sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+    for (double& x : ax) x /= n;
+    const double th = 3 * u(rng), c = std::cos(th), s1 = std::sin(th), v = 1 - c;
+    const double R[3][3] = {{c + v * ax[0] * ax[0], v * ax[0] * ax[1] - s1 * ax[2], v * ax[0] * ax[2] + s1 * ax[1]},
+                            {v * ax[1] * ax[0] + s1 * ax[2], c + v * ax[1] * ax[1], v * ax[1] * ax[2] - s1 * ax[0]},
+                            {v * ax[2] * ax[0] - s1 * ax[1], v * ax[2] * ax[1] + s1 * ax[0], c + v * ax[2] * ax[2]}};
+    for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+            double x = 0;
+            for (int k = 0; k < 3; ++k) x += R[i][k] * d[k] * R[j][k];
+            b.Ic[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] = b.Ic[static_cast<std::size_t>(j)][static_cast<std::size_t>(i)] = x;
+        }
+    b.com = {0.02 * u(rng), 0.02 * u(rng), 0.1 + 0.02 * u(rng)};
+}
+
+// A serial chain of N revolute joints cycling through the axes of `cycle`, frames `step` apart.
+template <std::size_t N>
+description<N> serial(const std::array<sp::joint_kind, 3>& cycle, std::size_t cycle_length, double step, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    description<N> d{};
+    for (std::size_t i = 0; i < N; ++i) {
+        d[i].parent = static_cast<int>(i) - 1;
+        d[i].kind = cycle[i % cycle_length];
+        d[i].t = {0, 0, i == 0 ? 0.0 : step};
+        random_inertia(rng, d[i]);
+    }
+    return d;
+}
+
+// ---- the benchmarked trees -----------------------------------------------------------------------
+
+using arm7_tree = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_y>, ch::link<1, ch::revolute_z>,
+                           ch::link<2, ch::revolute_y>, ch::link<3, ch::revolute_z>, ch::link<4, ch::revolute_y>,
+                           ch::link<5, ch::revolute_z>>;
+inline description<7> arm7() {
+    return serial<7>({sp::joint_kind::revolute_z, sp::joint_kind::revolute_y, sp::joint_kind::revolute_z}, 2, 0.3, 7);
+}
+
+// chain<N>: joint i about z, y, x, z, …
+template <std::size_t I>
+using cycling_joint = std::conditional_t<I % 3 == 0, ch::revolute_z, std::conditional_t<I % 3 == 1, ch::revolute_y, ch::revolute_x>>;
+template <class Seq>
+struct serial_tree;
+template <std::size_t... I>
+struct serial_tree<std::index_sequence<I...>> {
+    using type = ch::tree<ch::link<static_cast<int>(I) - 1, cycling_joint<I>>...>;
+};
+template <std::size_t N>
+using chain_tree = typename serial_tree<std::make_index_sequence<N>>::type;
+template <std::size_t N>
+description<N> chain() {
+    return serial<N>({sp::joint_kind::revolute_z, sp::joint_kind::revolute_y, sp::joint_kind::revolute_x}, 3, 0.1, 30 + N);
+}
+using chain30_tree = chain_tree<30>;
+
+// A trunk on a floating joint and four legs, each hip (x), thigh (y), knee (y).
+using legged_tree =
+    ch::tree<ch::link<-1, ch::floating>,                                                                   //
+             ch::link<0, ch::revolute_x>, ch::link<1, ch::revolute_y>, ch::link<2, ch::revolute_y>,      // front left
+             ch::link<0, ch::revolute_x>, ch::link<4, ch::revolute_y>, ch::link<5, ch::revolute_y>,      // front right
+             ch::link<0, ch::revolute_x>, ch::link<7, ch::revolute_y>, ch::link<8, ch::revolute_y>,      // hind left
+             ch::link<0, ch::revolute_x>, ch::link<10, ch::revolute_y>, ch::link<11, ch::revolute_y>>;  // hind right
+inline description<13> legged() {
+    std::mt19937_64 rng(13);
+    description<13> d{};
+    d[0] = {-1, sp::joint_kind::floating, {0, 0, 0}, 0, {}, {}};
+    random_inertia(rng, d[0]);
+    d[0].mass = 10;
+    const double hip[4][2] = {{0.3, 0.15}, {0.3, -0.15}, {-0.3, 0.15}, {-0.3, -0.15}};
+    for (int leg = 0; leg < 4; ++leg)
+        for (int j = 0; j < 3; ++j) {
+            body_description& b = d[static_cast<std::size_t>(1 + 3 * leg + j)];
+            b.parent = j == 0 ? 0 : 3 * leg + j;
+            b.kind = j == 0 ? sp::joint_kind::revolute_x : sp::joint_kind::revolute_y;
+            b.t = j == 0 ? std::array<double, 3>{hip[leg][0], hip[leg][1], 0} : std::array<double, 3>{0, 0, j == 1 ? -0.05 : -0.25};
+            random_inertia(rng, b);
+        }
+    return d;
+}
+
+// ---- building both implementations' models -----------------------------------------------------
+
+template <class J>
+constexpr sp::joint_kind kind_of() {
+    if constexpr (std::is_same_v<J, ch::revolute_x>) return sp::joint_kind::revolute_x;
+    else if constexpr (std::is_same_v<J, ch::revolute_y>) return sp::joint_kind::revolute_y;
+    else if constexpr (std::is_same_v<J, ch::revolute_z>) return sp::joint_kind::revolute_z;
+    else if constexpr (std::is_same_v<J, ch::floating>) return sp::joint_kind::floating;
+    else return sp::joint_kind::fixed;
+}
+
+template <class Tree, std::size_t N>
+ch::model<Tree> ctga_model(const description<N>& d) {
+    static_assert(Tree::size == N);
+    ch::model<Tree> m;
+    m.gravity = {0, 0, -9.81};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            using J = typename Tree::template joint_at<I>;
+            const body_description& b = d[I];
+            if (Tree::parent[I] != b.parent || kind_of<J>() != b.kind) throw std::logic_error("chain_models: tree type and description differ");
+            const auto link = ch::make_link<J>(ctga::motor<double>(ctga::translation(b.t[0], b.t[1], b.t[2])),
+                                               ctga::make_mass_properties(b.mass, ctga::vec3<double>{b.com[0], b.com[1], b.com[2]}, b.Ic));
+            if (!link) throw std::logic_error(ctga::describe(link.error));
+            m.template link<I>() = *link;
+        }(), ...);
+    }(std::make_index_sequence<N>{});
+    return m;
+}
+
+template <std::size_t N>
+sp::model<N> spatial_model(const description<N>& d) {
+    sp::model<N> m{};
+    for (std::size_t i = 0; i < N; ++i) {
+        const body_description& b = d[i];
+        m.bodies[i] = {b.parent,
+                       b.kind,
+                       {0, 0, 1},
+                       {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                       {b.t[0], b.t[1], b.t[2]},
+                       {b.mass, {b.com[0], b.com[1], b.com[2]}, {b.Ic[0][0], b.Ic[0][1], b.Ic[1][1], b.Ic[0][2], b.Ic[1][2], b.Ic[2][2]}}};
+    }
+    m.n = N;
+    m.gravity = {0, 0, -9.81};
+    sp::finalize(m);
+    return m;
+}
+
+// One state in both layouts: ctga's floating q is a motor (8 numbers), the spatial code's is
+// (x, y, z, qw, qx, qy, qz).
+template <class Tree>
+struct state {
+    ch::configuration<Tree> q{};
+    std::array<double, Tree::nq> q_spatial{};  // (the first nq − size_of_floating_difference used)
+    ch::joint_vector<Tree> qd{}, qdd{}, tau{};
+};
+
+template <class Tree>
+std::array<state<Tree>, 64> random_states(std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    std::uniform_real_distribution<double> u(-1, 1);
+    std::array<state<Tree>, 64> out{};
+    for (state<Tree>& s : out) {
+        std::size_t qs = 0;
+        for (std::size_t i = 0; i < Tree::size; ++i) {
+            const std::size_t o = Tree::q_offset[i];
+            if (Tree::nq_of[i] == 8) {
+                double ax[3] = {u(rng), u(rng), 1};
+                const double n = std::sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
+                const double th = 2 * u(rng), x = u(rng), y = u(rng), z = 0.5 + 0.2 * u(rng);
+                const ctga::motor<double> g =
+                    ctga::rigid_motion(ctga::translation(x, y, z), ctga::rotation(ax[0] / n, ax[1] / n, ax[2] / n, th));
+                for (std::size_t k = 0; k < 8; ++k) s.q[o + k] = g[k];
+                const double w = std::cos(th / 2), sh = std::sin(th / 2);
+                const double qs7[7] = {x, y, z, w, sh * ax[0] / n, sh * ax[1] / n, sh * ax[2] / n};
+                for (double c : qs7) s.q_spatial[qs++] = c;
+            } else if (Tree::nq_of[i] == 1) {
+                s.q[o] = s.q_spatial[qs++] = 2 * u(rng);
+            }
+        }
+        for (std::size_t k = 0; k < Tree::nv; ++k) s.qd[k] = u(rng), s.qdd[k] = 3 * u(rng), s.tau[k] = 5 * u(rng);
+    }
+    return out;
+}
+
+}  // namespace bench::chains

@@ -270,8 +270,8 @@ using quadruped_expected =
 static_assert(std::is_same_v<quadruped::tree, quadruped_expected>);
 static_assert(arm7::tree::nq == 7 && arm7::tree::nv == 7);
 static_assert(quadruped::tree::nq == 8 + 12 && quadruped::tree::nv == 6 + 12);
-// make_model is a constant expression (with g++ and Clang, whose std::cos / std::sin fold in
-// constant evaluation: ctga::rotation calls them)
+// make_model is a constant expression (ctga::rotation's cos and sin are ctga::math's, which are
+// constexpr with g++ and Clang)
 static_assert(arm7::make_model<double>() && quadruped::make_model<float>());
 
 }  // namespace

@@ -104,8 +104,9 @@ constexpr std::size_t depth_of(std::size_t i) {
     return d;
 }
 
-// The forward pass of §4.1/§5.3: maps, world poses, velocities and accelerations (as asked).
-template <pass What, class Tree, class T>
+// The forward pass of §4.1/§5.3: maps, world poses (when Poses), velocities and accelerations
+// (as asked). RNEA and ABA need no world poses: only each body's map in its parent.
+template <pass What, bool Poses, class Tree, class T>
 constexpr kinematics<Tree, T> forward_pass(const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
                                            const T* qdd, const screw<T>& a_world) noexcept {
     kinematics<Tree, T> k;
@@ -115,7 +116,8 @@ constexpr kinematics<Tree, T> forward_pass(const model<Tree, T>& m, const config
         using J = typename Tree::template joint_at<i>;
         const auto& L = m.template link<i>();
         k.X[i] = joint_map<i>(m, q);
-        if constexpr (p < 0) {
+        if constexpr (!Poses) {
+        } else if constexpr (p < 0) {
             k.pose[i] = k.X[i];
         } else {
             const motor_map<T>& W = k.pose[p];
@@ -157,20 +159,20 @@ struct forward_kinematics_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m,
                                                                    const configuration<Tree, T>& q) const noexcept {
-        return algorithm_detail::forward_pass<algorithm_detail::pass::poses>(m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
+        return algorithm_detail::forward_pass<algorithm_detail::pass::poses, true>(m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
     }
     // … and every body's velocity screw, body frame.
     template <class Tree, class T>
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                                    const joint_vector<Tree, T>& qd) const noexcept {
-        return algorithm_detail::forward_pass<algorithm_detail::pass::velocities>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+        return algorithm_detail::forward_pass<algorithm_detail::pass::velocities, true>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
     }
     // … and every body's acceleration (the true spatial acceleration, gravity not included).
     template <class Tree, class T>
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                                    const joint_vector<Tree, T>& qd,
                                                                    const joint_vector<Tree, T>& qdd) const noexcept {
-        return algorithm_detail::forward_pass<algorithm_detail::pass::accelerations>(m, q, qd.data(), qdd.data(), screw<T>{});
+        return algorithm_detail::forward_pass<algorithm_detail::pass::accelerations, true>(m, q, qd.data(), qdd.data(), screw<T>{});
     }
 };
 inline constexpr forward_kinematics_t forward_kinematics{};
@@ -182,7 +184,7 @@ template <class Tree, class T>
 constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
                                      const joint_vector<Tree, T>& qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
     const kinematics<Tree, T> k =
-        forward_pass<pass::accelerations>(m, q, qd.data(), qdd.data(), lift_gravity(m.gravity));
+        forward_pass<pass::accelerations, false>(m, q, qd.data(), qdd.data(), lift_gravity(m.gravity));
     std::array<coscrew<T>, Tree::size> f;
     forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
@@ -305,10 +307,16 @@ inline constexpr crba_t crba{};
 // the force τ (N^a = N^A − N^A (N^A)⁻¹ N^A = 0, p^a = p^A + (τ − p^A)).
 
 namespace algorithm_detail {
+// The screw component an axis joint's S lies on, 6 for any other joint.
+template <class J>
+constexpr std::size_t null_component() {
+    if constexpr (requires { J::component; }) return J::component;
+    else return 6;
+}
 template <class Tree, class T>
 constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
                                     const joint_vector<Tree, T>& tau, const body_wrenches<Tree, T>* f_ext) noexcept {
-    const kinematics<Tree, T> k = forward_pass<pass::velocities>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+    const kinematics<Tree, T> k = forward_pass<pass::velocities, false>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
     std::array<articulated_inertia<T>, Tree::size> NA;
     std::array<coscrew<T>, Tree::size> pA;
     forward<Tree::size>([&](auto body) {
@@ -318,11 +326,11 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
         pA[i] = coadjoint(k.v[i], momentum(N, k.v[i]));
         if (f_ext) pA[i] = pA[i] - (*f_ext)[i];
     });
-    // c_i = v_i × S_i q̇_i, in the bracket's own sparse type (nv = 1, 6 only)
+    // c_i = v_i × S_i q̇_i in the bracket's own sparse type: four blades for an axis joint (nv = 1, 6 only)
     const auto bias = [&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         using J = typename Tree::template joint_at<i>;
-        return bracket(k.v[i], joint_screw<J>(m.template link<i>().joint, qd.data() + Tree::v_offset[i]));
+        return eval(bracket.formula(k.v[i], joint_screw<J>(m.template link<i>().joint, qd.data() + Tree::v_offset[i])));
     };
     std::array<coscrew<T>, Tree::size> U;   // N^A S (1-dof joints)
     std::array<T, Tree::size> D_inverse{};  // 1 / U(S)
@@ -338,9 +346,11 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
             D_inverse[i] = T(1) / evaluation(U[i], S);
             u[i] = tau[Tree::v_offset[i]] - evaluation(pA[i], S);
             if constexpr (p >= 0) {
-                const articulated_inertia<T> Na = minus_joint(NA[i], U[i], D_inverse[i]);
+                // an axis joint's S is one screw component: N^a has a zero row and column there
+                constexpr std::size_t null = null_component<J>();
+                const articulated_inertia<T> Na = minus_joint<null>(NA[i], U[i], D_inverse[i]);
                 const coscrew<T> pa = pA[i] + momentum(Na, bias(body)) + U[i] * (u[i] * D_inverse[i]);
-                NA[p] = NA[p] + transform(k.X[i], Na);
+                NA[p] = NA[p] + transform<null>(k.X[i], Na);
                 pA[p] = pA[p] + transform(k.X[i], pa);
             }
         } else if constexpr (J::nv == 0) {
@@ -410,7 +420,8 @@ struct kinetic_energy_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr T operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                              const joint_vector<Tree, T>& qd) const noexcept {
-        const kinematics<Tree, T> k = forward_kinematics(m, q, qd);
+        const kinematics<Tree, T> k = algorithm_detail::forward_pass<algorithm_detail::pass::velocities, false>(
+            m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
         T e = T(0);
         algorithm_detail::forward<Tree::size>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;

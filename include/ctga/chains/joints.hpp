@@ -26,6 +26,7 @@
 #include <cmath>
 #include <concepts>
 #include <cstddef>
+#include <string_view>
 #include <type_traits>
 
 #include "ctga/mechanics/algebras.hpp"
@@ -93,6 +94,13 @@ struct unit_axis {
 template <fixed_string Blade>
 struct one_blade {
     static constexpr std::size_t nq = 1, nv = 1;
+    // the screw component S lies on (screw.hpp's order: ω then v), e.g. 2 for e1e2
+    static constexpr std::size_t component = [] {
+        constexpr std::string_view names[6] = {"e2e3", "e3e1", "e1e2", "e1e", "e2e", "e3e"};
+        for (std::size_t k = 0; k < 6; ++k)
+            if (names[k] == Blade.view()) return k;
+        return std::size_t(6);
+    }();
     template <class T>
     using parameters = no_parameters;
     template <class T>

@@ -103,16 +103,15 @@ struct articulated_inertia {
 // A rigid body's N = [[I_o, Ĥ], [−Ĥ, m 1]] (§2) as an articulated inertia: the body alone.
 template <class T>
 [[nodiscard]] constexpr articulated_inertia<T> articulated_inertia_of(const body_inertia<T>& N) noexcept {
-    articulated_inertia<T> out;
-    const mat3<T> Io = N.inertia_o();
-    const mat3<T> H = linear3::hat(N.first_moment());
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = i; j < 3; ++j) out.set(i, j, Io[i][j]);
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) out.set(i, j + 3, H[i][j]);
-    for (std::size_t i = 3; i < 6; ++i)
-        for (std::size_t j = i; j < 6; ++j) out.set(i, j, i == j ? N.mass() : T(0));
-    return out;
+    using s = typename articulated_inertia<T>::scalar;
+    const s zero{T(0)};
+    // rows of the upper triangle: (I_o row 0, Ĥ row 0), (I_o row 1, Ĥ row 1), (I_o, Ĥ row 2), m 1
+    return {{N.ixx, N.ixy, N.ixz, zero, s{-N.hz[0]}, N.hy,   //
+             N.iyy, N.iyz, N.hz, zero, s{-N.hx[0]},          //
+             N.izz, s{-N.hy[0]}, N.hx, zero,                 //
+             N.m, zero, zero,                                //
+             N.m, zero,                                      //
+             N.m}};
 }
 
 // The same element with its 36 blades stored (the general inertia of inertia.hpp).
@@ -126,38 +125,68 @@ template <class T>
 
 // The joint's share removed (Featherstone eq. 7.41): N − U Uᵀ / D for U = N S and D = U(S) of a
 // one-degree-of-freedom joint, given U and 1/D. What the parent sees through the joint (27m 21a).
-template <class T>
+// (N − U Uᵀ/D) S = U − U D/D = 0: when S is the single blade of screw component Null (an axis
+// joint), row and column Null are exactly zero, and are set so rather than computed (15m fewer,
+// and no rounding left where the algebra has none). Null = 6: no such component.
+template <std::size_t Null = 6, class T>
 [[nodiscard]] constexpr articulated_inertia<T> minus_joint(const articulated_inertia<T>& N, const coscrew<T>& U,
                                                            const T& D_inverse) noexcept {
     std::array<T, 6> W{};  // U / D
     for (std::size_t i = 0; i < 6; ++i) W[i] = U[i] * D_inverse;
     articulated_inertia<T> out;
-    for (std::size_t k = 0; k < 21; ++k) {
-        const auto [i, j] = articulated_detail::upper_entries[k];
-        out.n[k] = typename articulated_inertia<T>::scalar{N.n[k][0] - W[i] * U[j]};
-    }
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+        ((out.n[K] = typename articulated_inertia<T>::scalar{
+              articulated_detail::upper_entries[K].i == Null || articulated_detail::upper_entries[K].j == Null
+                  ? T(0)
+                  : N.n[K][0] - W[articulated_detail::upper_entries[K].i] * U[articulated_detail::upper_entries[K].j]}),
+         ...);
+    }(std::make_index_sequence<21>{});
     return out;
 }
+
+namespace articulated_detail {
+// Σ_k a[k] b[k] over k ≠ Skip (Skip = 3: all three).
+template <std::size_t Skip, class T>
+CTGA_ALWAYS_INLINE constexpr T dot_but(const vec3<T>& a, const vec3<T>& b) noexcept {
+    if constexpr (Skip == 0) return a[1] * b[1] + a[2] * b[2];
+    else if constexpr (Skip == 1) return a[0] * b[0] + a[2] * b[2];
+    else if constexpr (Skip == 2) return a[0] * b[0] + a[1] * b[1];
+    else return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+}
+// R X Rᵀ for a 3×3 block X whose row RowSkip and column ColSkip are zero (3: none).
+template <std::size_t RowSkip, std::size_t ColSkip, class T>
+CTGA_ALWAYS_INLINE constexpr mat3<T> rotate_block(const mat3<T>& R, const mat3<T>& X) noexcept {
+    mat3<T> XRt{};  // X Rᵀ: entry (k, j) = row k of X · row j of R
+    for (std::size_t k = 0; k < 3; ++k)
+        if (k != RowSkip)
+            for (std::size_t j = 0; j < 3; ++j) XRt[k][j] = dot_but<ColSkip>(X[k], R[j]);
+    mat3<T> out{};  // R (X Rᵀ): entry (i, j) = Σ_k R[i][k] (X Rᵀ)[k][j]
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j)
+            out[i][j] = dot_but<RowSkip>(R[i], vec3<T>{XRt[0][j], XRt[1][j], XRt[2][j]});
+    return out;
+}
+}  // namespace articulated_detail
 
 // N' = H⁻ᵀ N H⁻¹ (§5: (g ḡ) N (g ḡ)*), for G = (R, t) the map of the child's frame into the
 // parent's, H = [[R, 0], [T R, R]] (T = t̂, as transform(G, s) moves a screw). With the rotated
 // blocks A' = R A Rᵀ, B' = R B Rᵀ, C' = R C Rᵀ, and Y = T C', X = T B'ᵀ:
 //   C'' = C',  B'' = B' + Y,  A'' = A' + X + Xᵀ − Y T
 // ([[1, T], [0, 1]] [[A', B'], [B'ᵀ, C']] [[1, 0], [−T, 1]]; Y T = T C' T is symmetric, and row
-// i of −Y T is t × (row i of Y)). 162m 129a.
-template <class T>
+// i of −Y T is t × (row i of Y)). 189m 150a for a full N; with a zero row and column Null
+// (minus_joint after an axis joint) the rotations skip it: 159m for a revolute joint's N.
+template <std::size_t Null = 6, class T>
 [[nodiscard]] constexpr articulated_inertia<T> transform(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
     using linear3::cross;
+    constexpr std::size_t skip_w = Null < 3 ? Null : 3, skip_v = Null >= 3 && Null < 6 ? Null - 3 : 3;
     const mat3<T>& R = G.R;
     const vec3<T>& t = G.t;
     mat3<T> A{}, B{}, C{};
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) A[i][j] = N(i, j), B[i][j] = N(i, j + 3), C[i][j] = N(i + 3, j + 3);
-    const mat3<T> A1 = linear3::rotate_symmetric(R, A), C1 = linear3::rotate_symmetric(R, C);
-    mat3<T> RB{}, B1{};  // R B, then (R B) Rᵀ
-    for (std::size_t i = 0; i < 3; ++i) RB[i] = linear3::apply_transposed(B, R[i]);
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j) B1[i][j] = linear3::dot(RB[i], R[j]);
+    const mat3<T> A1 = articulated_detail::rotate_block<skip_w, skip_w>(R, A);
+    const mat3<T> B1 = articulated_detail::rotate_block<skip_w, skip_v>(R, B);
+    const mat3<T> C1 = articulated_detail::rotate_block<skip_v, skip_v>(R, C);
     // Y = T C' column by column (C' symmetric: its columns are its rows); B'' = B' + Y
     mat3<T> Y{};
     for (std::size_t j = 0; j < 3; ++j) {

@@ -143,7 +143,7 @@ struct formula_t {
     F f;
 
     template <formula_argument... Args>
-    [[nodiscard]] constexpr auto operator()(Args&&... args) const noexcept {
+    [[nodiscard]] CTGA_ALWAYS_INLINE constexpr auto operator()(Args&&... args) const noexcept {
         auto body = expr::call_with_placeholders<F, Args...>(f);
         using B = decltype(body);
         using first = expr::shape_of<std::tuple_element_t<0, std::tuple<Args...>>>;

@@ -577,7 +577,7 @@ template <class T>
 
 // (g ḡ) N (g ḡ)* on the ten parameters (transform_detail::move_inertia, 54m 50a).
 template <class T>
-[[nodiscard]] constexpr body_inertia<T> transform(const motor_map<T>& G, const body_inertia<T>& N) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr body_inertia<T> transform(const motor_map<T>& G, const body_inertia<T>& N) noexcept {
     using s = typename body_inertia<T>::scalar;
     const transform_detail::moved_inertia<T> n = transform_detail::move_inertia(G, N.mass(), N.first_moment(), N.inertia_o());
     return {N.m, s{n.h[0]}, s{n.h[1]}, s{n.h[2]}, s{n.xx}, s{n.yy}, s{n.zz}, s{n.xy}, s{n.xz}, s{n.yz}};

@@ -25,6 +25,7 @@
 #include "ctga/operations/evaluate.hpp"
 #include "ctga/operations/formula.hpp"
 #include "ctga/support/checked.hpp"
+#include "ctga/support/inline.hpp"
 #include "ctga/support/math.hpp"
 
 namespace ctga {
@@ -186,7 +187,7 @@ template <class T>
 
 // g s g* = H s: ω' = R ω, v' = R v + t × ω'.
 template <class T>
-[[nodiscard]] constexpr screw<T> transform(const motor_map<T>& G, const screw<T>& s) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> transform(const motor_map<T>& G, const screw<T>& s) noexcept {
     const vec3<T> w = linear3::apply(G.R, vec3<T>{s[0], s[1], s[2]});
     const vec3<T> v = linear3::add(linear3::apply(G.R, vec3<T>{s[3], s[4], s[5]}), linear3::cross(G.t, w));
     return screw<T>{w[0], w[1], w[2], v[0], v[1], v[2]};
@@ -194,7 +195,7 @@ template <class T>
 
 // ḡ P ḡ* = H⁻ᵀ P: p' = R p, l' = R l + t × p'.
 template <class T>
-[[nodiscard]] constexpr coscrew<T> transform(const motor_map<T>& G, const coscrew<T>& P) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr coscrew<T> transform(const motor_map<T>& G, const coscrew<T>& P) noexcept {
     const vec3<T> p = linear3::apply(G.R, vec3<T>{P[3], P[4], P[5]});
     const vec3<T> l = linear3::add(linear3::apply(G.R, vec3<T>{P[0], P[1], P[2]}), linear3::cross(G.t, p));
     return coscrew<T>{l[0], l[1], l[2], p[0], p[1], p[2]};
@@ -203,7 +204,7 @@ template <class T>
 // The same actions by g⁻¹ = g*, without forming its map (Rᵀ applied directly), 24m 18a each:
 // on a screw H⁻¹ s: ω' = Rᵀ ω, v' = Rᵀ (v − t × ω); on a co-screw Hᵀ P: l' = Rᵀ (l − t × p), p' = Rᵀ p.
 template <class T>
-[[nodiscard]] constexpr screw<T> transform_inverse(const motor_map<T>& G, const screw<T>& s) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> transform_inverse(const motor_map<T>& G, const screw<T>& s) noexcept {
     const vec3<T> w{s[0], s[1], s[2]};
     const vec3<T> tw = linear3::cross(G.t, w);
     const vec3<T> w2 = linear3::apply_transposed(G.R, w);
@@ -211,7 +212,7 @@ template <class T>
     return screw<T>{w2[0], w2[1], w2[2], v2[0], v2[1], v2[2]};
 }
 template <class T>
-[[nodiscard]] constexpr coscrew<T> transform_inverse(const motor_map<T>& G, const coscrew<T>& P) noexcept {
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr coscrew<T> transform_inverse(const motor_map<T>& G, const coscrew<T>& P) noexcept {
     const vec3<T> p{P[3], P[4], P[5]};
     const vec3<T> tp = linear3::cross(G.t, p);
     const vec3<T> l2 = linear3::apply_transposed(G.R, vec3<T>{P[0] - tp[0], P[1] - tp[1], P[2] - tp[2]});

@@ -105,10 +105,15 @@ constexpr std::size_t depth_of(std::size_t i) {
 }
 
 // The forward pass of §4.1/§5.3: maps, world poses (when Poses), velocities and accelerations
-// (as asked). RNEA and ABA need no world poses: only each body's map in its parent.
-template <pass What, bool Poses, class Tree, class T>
+// (as asked), then then(body, k) while the body's numbers are at hand (RNEA's forces). RNEA and
+// ABA need no world poses: only each body's map in its parent.
+struct no_body_work {
+    template <class B, class K>
+    constexpr void operator()(B, const K&) const noexcept {}
+};
+template <pass What, bool Poses, class Tree, class T, class Then = no_body_work>
 constexpr kinematics<Tree, T> forward_pass(const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
-                                           const T* qdd, const screw<T>& a_world) noexcept {
+                                           const T* qdd, const screw<T>& a_world, Then&& then = {}) noexcept {
     kinematics<Tree, T> k;
     forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
@@ -146,6 +151,7 @@ constexpr kinematics<Tree, T> forward_pass(const model<Tree, T>& m, const config
                 }
             }
         }
+        then(body, k);
     });
     return k;
 }
@@ -183,16 +189,15 @@ namespace algorithm_detail {
 template <class Tree, class T>
 constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
                                      const joint_vector<Tree, T>& qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
-    const kinematics<Tree, T> k =
-        forward_pass<pass::accelerations, false>(m, q, qd.data(), qdd.data(), lift_gravity(m.gravity));
     std::array<coscrew<T>, Tree::size> f;
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        const auto& N = m.template link<i>().inertia;
-        // f_i = N a_i + v_i ×* (N v_i) − f_ext
-        f[i] = momentum(N, k.a[i]) + coadjoint(k.v[i], momentum(N, k.v[i]));
-        if (f_ext) f[i] = f[i] - (*f_ext)[i];
-    });
+    const kinematics<Tree, T> k = forward_pass<pass::accelerations, false>(
+        m, q, qd.data(), qdd.data(), lift_gravity(m.gravity), [&](auto body, const kinematics<Tree, T>& kb) {
+            constexpr std::size_t i = decltype(body)::value;
+            const auto& N = m.template link<i>().inertia;
+            // f_i = N a_i + v_i ×* (N v_i) − f_ext
+            f[i] = momentum(N, kb.a[i]) + coadjoint(kb.v[i], momentum(N, kb.v[i]));
+            if (f_ext) f[i] = f[i] - (*f_ext)[i];
+        });
     joint_vector<Tree, T> tau{};
     backward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;

@@ -33,6 +33,29 @@ for op in "${operations[@]}"; do
     done
 done
 
+# kinematic trees: ctga_chains_bench, its instructions, and the scaling executables (1–64 bodies)
+cmake --build "$BUILD_DIR" --target ctga_chains_bench ctga_chains_scaling_small ctga_chains_scaling_32 \
+    ctga_chains_scaling_64 -j"$(nproc)"
+"$out/ctga_chains_bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_min_time=0.2 \
+    --benchmark_out="$out/chains.json" --benchmark_out_format=json
+: >"$out/chains_instructions.txt"
+for tree in arm7 chain30 tree; do
+    for a in rnea aba crba fk; do
+        for impl in ctga spatial; do
+            total=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect='*chain_kernel*' \
+                "$out/ctga_chains_bench" --repeat "${a}_$tree/$impl" "$calls" 2>&1 | awk '/Collected/ {print $4}')
+            echo "${a}_$tree $impl $((total / calls))" >>"$out/chains_instructions.txt"
+        done
+    done
+done
+scaling=()
+for group in small 32 64; do
+    "$out/ctga_chains_scaling_$group" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+        --benchmark_min_time=0.1 --benchmark_out="$out/chains_scaling_$group.json" --benchmark_out_format=json
+    scaling+=("$out/chains_scaling_$group.json")
+done
+
 /usr/bin/python3 tools/render_benchmarks.py "$out/results.json" "$out/instructions.txt" \
-    "$out/compile_cost.md" docs/benchmarks.md docs/img/benchmarks.svg
+    "$out/compile_cost.md" docs/benchmarks.md docs/img/benchmarks.svg \
+    "$out/chains.json" "$out/chains_instructions.txt" docs/img/chains_scaling.svg "${scaling[@]}"
 echo "bench: wrote docs/benchmarks.md and docs/img/benchmarks.svg"

@@ -1,10 +1,13 @@
 """Render docs/benchmarks.md and its plot from a ctga_bench run (called by tools/bench.sh).
 
     render_benchmarks.py RESULTS.json INSTRUCTIONS.txt COMPILE_COST.md OUT.md OUT.svg
+                         [CHAINS.json CHAINS_INSTRUCTIONS.txt SCALING.svg SCALING.json...]
 
 RESULTS.json: Google Benchmark JSON with aggregates (the medians are used).
 INSTRUCTIONS.txt: lines "operation implementation instructions-per-call" (callgrind).
 COMPILE_COST.md: the fragment tools/compile-cost.sh writes (included when it exists).
+CHAINS.json, SCALING.json: ctga_chains_bench and ctga_chains_scaling_* runs (kinematic trees),
+CHAINS_INSTRUCTIONS.txt: "algorithm_tree implementation instructions" lines; SCALING.svg the plot.
 """
 import json
 import os
@@ -66,6 +69,74 @@ def ratio(a, b, digits=2):
 
 def verdict(value, limit):
     return "" if value is None else (" ✓" if value <= limit else " ✗")
+
+
+CHAIN_TREES = [("arm7", "7-dof arm (revolute z, y, z, y, z, y, z)"), ("chain30", "30-body chain (revolute z, y, x, …)"),
+               ("tree", "floating base with four 3-joint legs (13 bodies, 18 dofs)")]
+CHAIN_ALGORITHMS = ["rnea", "aba", "crba", "fk"]
+# issue 15: on the 7-dof arm, ctga/spatial ≤ 1.0 on RNEA and ABA, ≤ 1.2 on CRBA
+CHAIN_TARGET = {("rnea", "arm7"): 1.0, ("aba", "arm7"): 1.0, ("crba", "arm7"): 1.2}
+
+
+def chains_section(chains_json, chains_instr, scaling_svg, scaling_jsons):
+    _, t = medians(chains_json)
+    ins = instructions(chains_instr)
+    out = ["## Kinematic trees: RNEA, ABA, CRBA, forward kinematics", "",
+           "`ctga_chains_bench` (`bench/chains.cpp`): ctga::chains against hand-written spatial code",
+           "(`bench/spatial_chains.hpp`: Featherstone's algorithms with Pinocchio-like joint specialisation,",
+           "3×3 rotation + translation placements, run-time structure). Trees in `bench/chain_models.hpp`;",
+           "one non-inlined call on one of 64 random states; fk is poses, velocities and accelerations.", "",
+           "| algorithm | tree | ctga | spatial | ctga/spatial | instr. ctga | instr. spatial |",
+           "| --- | --- | --- | --- | --- | --- | --- |"]
+    for tree, _ in CHAIN_TREES:
+        for a in CHAIN_ALGORITHMS:
+            name = f"{a}_{tree}"
+            c, sp = t.get((name, "ctga")), t.get((name, "spatial"))
+            r = c / sp if c and sp else None
+            mark = verdict(r, CHAIN_TARGET[(a, tree)]) if (a, tree) in CHAIN_TARGET else ""
+            out.append(f"| {a} | {tree} | {fmt_time(c)} | {fmt_time(sp)} | {ratio(c, sp)}{mark} | "
+                       f"{ins.get((name, 'ctga'), '—')} | {ins.get((name, 'spatial'), '—')} |")
+    out += ["", "Trees: " + "; ".join(f"**{k}** {d}" for k, d in CHAIN_TREES) + ".",
+            "Targets (issue 15): on the arm ctga/spatial ≤ 1.0 for RNEA and ABA, ≤ 1.2 for CRBA (✓/✗).", ""]
+    # scaling: time against the number of bodies
+    series = {}
+    for path in scaling_jsons:
+        if not os.path.exists(path):
+            continue
+        _, ts = medians(path)
+        for (op, impl), v in ts.items():
+            a, n = op.split("/")  # rnea_chain/8
+            series.setdefault((a.replace("_chain", ""), impl), []).append((int(n), v))
+    if not series:
+        return out
+    import math
+    out += ["### Scaling with the number of bodies", "",
+            "Serial chains of 1 to 64 revolute bodies (`ctga_chains_scaling_*`). Growth exponent: the slope",
+            "of log time against log bodies from 8 to 64 (1: linear, 2: quadratic).", "",
+            "| algorithm | implementation | " + " | ".join(f"{n}" for n, _ in sorted(series.get(("rnea", "ctga"), []))) + " | exponent |",
+            "| --- | --- |" + " --- |" * (len(series.get(("rnea", "ctga"), [])) + 1)]
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for (a, impl), pts in sorted(series.items()):
+        pts.sort()
+        big = [(n, v) for n, v in pts if n >= 8]
+        slope = float("nan")
+        if len(big) >= 2:
+            xs, ys = [math.log(n) for n, _ in big], [math.log(v) for _, v in big]
+            mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+            slope = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sum((x - mx) ** 2 for x in xs)
+        out.append(f"| {a} | {impl} | " + " | ".join(fmt_time(v) for _, v in pts) + f" | {slope:.2f} |")
+        ax.plot([n for n, _ in pts], [v for _, v in pts], ("-" if impl == "ctga" else "--") + "o", markersize=3,
+                label=f"{a} {impl}")
+    ax.set_xscale("log", base=2)
+    ax.set_yscale("log")
+    ax.set_xlabel("bodies")
+    ax.set_ylabel("median time per call (ns)")
+    ax.grid(which="both", alpha=0.3)
+    ax.legend(ncol=2, fontsize=8)
+    fig.tight_layout()
+    fig.savefig(scaling_svg)
+    out += ["", f"![time against the number of bodies](img/{os.path.basename(scaling_svg)})", ""]
+    return out
 
 
 def main():
@@ -135,6 +206,8 @@ def main():
                 mark = " ✓" if dn / lp >= 3 else " ✗"
             lines.append(f"| {p.replace('_', ' ')} | {fmt_time(lp)} | {fmt_time(dn)} | {ratio(dn, lp, 1)}{mark} |")
         lines.append("")
+    if len(sys.argv) > 8:
+        lines += chains_section(sys.argv[6], sys.argv[7], sys.argv[8], sys.argv[9:])
     if os.path.exists(compile_md):
         with open(compile_md) as f:
             lines += ["## Compile time", "", f.read().strip(), ""]

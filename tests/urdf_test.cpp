@@ -23,6 +23,7 @@
 #include "quadruped.hpp"  // generated: ... tests/data/quadruped.urdf --name quadruped --floating-base
 #include "support/catch.hpp"
 #include "support/featherstone.hpp"
+#include "support/relative_error.hpp"
 #include "support/random_tree.hpp"
 
 namespace {
@@ -127,26 +128,7 @@ fs::model reference_of(const std::vector<urdf_body>& urdf) {
 
 // ---- comparisons -------------------------------------------------------------------------------
 
-// max |a − b| / max(1, max |b|)
-template <class A>
-double rel_error(const A& a, const Eigen::VectorXd& b) {
-    double e = 0, s = 1;
-    for (Eigen::Index i = 0; i < b.size(); ++i) {
-        e = std::max(e, std::abs(a[static_cast<std::size_t>(i)] - b[i]));
-        s = std::max(s, std::abs(b[i]));
-    }
-    return e / s;
-}
-template <class Tree>
-double rel_error(const ch::joint_matrix<Tree>& a, const Eigen::MatrixXd& b) {
-    double e = 0, s = 1;
-    for (Eigen::Index i = 0; i < b.rows(); ++i)
-        for (Eigen::Index j = 0; j < b.cols(); ++j) {
-            e = std::max(e, std::abs(a[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] - b(i, j)));
-            s = std::max(s, std::abs(b(i, j)));
-        }
-    return e / s;
-}
+using ctga::test::rel_error;
 
 double max_abs_diff(const ctga::motor_map<double>& G, const fs::mat3& R, const fs::vec3& t) {
     double e = 0;
@@ -230,7 +212,7 @@ void compare_dynamics(const ch::model<Tree>& m, const fs::model& ref, std::uint6
             CHECK(rel_error(k.a[i], kr.bodies[i].acceleration) < 1e-12);
         }
         CHECK(rel_error(ch::rnea(m, q, qd, qdd), fs::rnea(ref, q_ref, qd_ref, qdd_ref)) < 1e-12);
-        CHECK(rel_error<Tree>(ch::crba(m, q), fs::crba(ref, q_ref)) < 1e-12);
+        CHECK(rel_error(ch::crba(m, q), fs::crba(ref, q_ref)) < 1e-12);
     }
 }
 

@@ -1,0 +1,112 @@
+// The kernels of ctga_chains_bench (bench/chains.cpp): one non-inlined call (chain_kernel) of an
+// algorithm on a tree, in ctga or in the hand-written spatial code, registered as
+// <algorithm>_<tree>/<implementation>. Each tree's kernels are instantiated in their own
+// translation unit (chains_arm7.cpp, …), so that no unit compiles every tree.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <benchmark/benchmark.h>
+
+#include "chain_models.hpp"
+
+namespace bench::chains {
+
+enum class algorithm { fk, rnea, crba, aba };
+enum class implementation { ctga, spatial };
+
+template <class Tree>
+struct fixture {
+    static constexpr std::size_t n = Tree::size;
+    ch::model<Tree> m;
+    sp::model<n> sm;
+    std::array<state<Tree>, 64> states;
+};
+
+template <class Tree>
+fixture<Tree> make_fixture(const description<Tree::size>& d, std::uint64_t seed) {
+    return {ctga_model<Tree>(d), spatial_model(d), random_states<Tree>(seed)};
+}
+
+template <algorithm A, implementation I, class Tree>
+[[gnu::noinline]] auto chain_kernel(const fixture<Tree>& f, const state<Tree>& s) {
+    if constexpr (I == implementation::ctga) {
+        if constexpr (A == algorithm::fk) return ch::forward_kinematics(f.m, s.q, s.qd, s.qdd);
+        else if constexpr (A == algorithm::rnea) return ch::rnea(f.m, s.q, s.qd, s.qdd);
+        else if constexpr (A == algorithm::crba) return ch::crba(f.m, s.q);
+        else return ch::aba(f.m, s.q, s.qd, s.tau);
+    } else {
+        if constexpr (A == algorithm::fk) {
+            sp::kinematics<Tree::size> k;
+            sp::fk(f.sm, s.q_spatial.data(), s.qd.data(), s.qdd.data(), k);
+            return k;
+        } else if constexpr (A == algorithm::rnea) {
+            ch::joint_vector<Tree> tau;
+            sp::rnea(f.sm, s.q_spatial.data(), s.qd.data(), s.qdd.data(), nullptr, tau.data());
+            return tau;
+        } else if constexpr (A == algorithm::crba) {
+            std::array<double, Tree::nv * Tree::nv> H;
+            sp::crba(f.sm, s.q_spatial.data(), H.data());
+            return H;
+        } else {
+            ch::joint_vector<Tree> qdd;
+            sp::aba(f.sm, s.q_spatial.data(), s.qd.data(), s.tau.data(), nullptr, qdd.data());
+            return qdd;
+        }
+    }
+}
+
+struct entry {
+    std::string name;
+    std::function<void(benchmark::State&)> time;
+    std::function<void(std::size_t)> repeat;
+};
+
+template <algorithm A, implementation I, class Tree>
+void add(std::vector<entry>& table, const std::string& name, const fixture<Tree>& f) {
+    const fixture<Tree>* p = &f;
+    table.push_back({name,
+                     [p](benchmark::State& st) {
+                         std::size_t k = 0;
+                         for (auto _ : st) {
+                             auto r = chain_kernel<A, I>(*p, p->states[k]);
+                             benchmark::DoNotOptimize(r);
+                             k = (k + 1) & 63;
+                         }
+                     },
+                     [p](std::size_t calls) {
+                         for (std::size_t i = 0; i < calls; ++i) {
+                             auto r = chain_kernel<A, I>(*p, p->states[i & 63]);
+                             benchmark::DoNotOptimize(r);
+                         }
+                     }});
+}
+
+// Registers algorithms A... of one tree, in both implementations: <algorithm>_<label>/<implementation>.
+constexpr const char* name_of(algorithm a) {
+    return a == algorithm::fk ? "fk" : a == algorithm::rnea ? "rnea" : a == algorithm::crba ? "crba" : "aba";
+}
+template <algorithm... A, class Tree>
+void add_tree(std::vector<entry>& table, const std::string& label, const fixture<Tree>& f) {
+    (  // rnea_arm7/ctga, rnea_chain/8/spatial, …
+        [&] {
+            const std::string name = std::string(name_of(A)) + "_" + label;
+            add<A, implementation::ctga>(table, name + "/ctga", f);
+            add<A, implementation::spatial>(table, name + "/spatial", f);
+        }(),
+        ...);
+}
+
+// the tables of each translation unit
+void add_arm7(std::vector<entry>& table);
+void add_chain30(std::vector<entry>& table);  // RNEA and ABA
+void add_chain30_crba_fk(std::vector<entry>& table);
+void add_legged(std::vector<entry>& table);
+void add_scaling(std::vector<entry>& table);  // CTGA_CHAINS_SCALING: chains of those sizes
+
+}  // namespace bench::chains

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Install missing Debian packages, build everything and run all tests, with two compilers:
 #   1. g++     in BUILD_DIR       (default build/)
-#   2. clang++ in CLANG_BUILD_DIR (default build-clang/), the same targets: every test, example
-#      and benchmark, CTest's compile-fail, consumer, codegen and layering tests included.
+#   2. clang++ in CLANG_BUILD_DIR (default build-clang/), the same tests and examples, CTest's
+#      compile-fail, consumer, codegen and layering tests included; not the benchmarks, which
+#      are built (and run by tools/bench.sh) with g++.
 # Arguments go to both ctest runs (e.g. bash tools/test.sh -L unit, bash tools/test.sh -R dense).
 #
 # The Clang tree uses $CLANG_CXX (default clang++; Debian 12's clang 14 from tools/deps.sh) on
@@ -41,7 +42,9 @@ if ! command -v "$clang_cxx" >/dev/null 2>&1; then
 fi
 start=$SECONDS
 echo "test: Clang tree $clang_build ($("$clang_cxx" --version | head -n 1))"
-CXX=$clang_cxx BUILD_DIR=$clang_build bash tools/configure.sh
+# the benchmarks are built (and run, tools/bench.sh) with g++ only: the Clang tree checks the
+# library, its tests and examples
+CXX=$clang_cxx BUILD_DIR=$clang_build bash tools/configure.sh -DCTGA_BUILD_BENCHMARKS=OFF
 cached=$(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$clang_build/CMakeCache.txt")
 if [[ "$cached" != *clang* ]]; then
     echo "test: $clang_build is configured with $cached, not Clang: remove it and rerun" >&2

@@ -8,12 +8,7 @@
 // Each kernel is one non-inlined call (chain_kernel) on one of 64 random states in memory,
 // cycling, so nothing folds and callgrind can count the instructions of a call alone:
 //   ctga_chains_bench --repeat NAME N        call one kernel N times and exit
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <vector>
-
-#include <benchmark/benchmark.h>
 
 #include "chains_kernels.hpp"
 
@@ -28,19 +23,5 @@ int main(int argc, char** argv) {
     add_chain30_crba_fk(table);
     add_legged(table);
 #endif
-    if (argc == 4 && std::strcmp(argv[1], "--repeat") == 0) {
-        for (const entry& e : table)
-            if (e.name == argv[2]) {
-                e.repeat(std::strtoull(argv[3], nullptr, 10));
-                return 0;
-            }
-        std::fprintf(stderr, "%s: no kernel named %s\n", argv[0], argv[2]);
-        return 2;
-    }
-    for (const entry& e : table) benchmark::RegisterBenchmark(e.name.c_str(), e.time);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
+    return bench::run(table, argc, argv);
 }

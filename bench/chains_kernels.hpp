@@ -14,6 +14,7 @@
 #include <benchmark/benchmark.h>
 
 #include "chain_models.hpp"
+#include "runner.hpp"
 
 namespace bench::chains {
 
@@ -61,11 +62,7 @@ template <algorithm A, implementation I, class Tree>
     }
 }
 
-struct entry {
-    std::string name;
-    std::function<void(benchmark::State&)> time;
-    std::function<void(std::size_t)> repeat;
-};
+using bench::entry;
 
 template <algorithm A, implementation I, class Tree>
 void add(std::vector<entry>& table, const std::string& name, const fixture<Tree>& f) {

@@ -5,9 +5,6 @@
 //   ctga_bench [Google Benchmark flags]      time the suite
 //   ctga_bench --repeat NAME N               call one kernel N times and exit (for callgrind,
 //                                            which counts the instructions of the kernel alone)
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,6 +12,7 @@
 #include <benchmark/benchmark.h>
 
 #include "kernels.hpp"
+#include "runner.hpp"
 
 namespace {
 
@@ -23,11 +21,7 @@ const bench::input_batches& inputs() {
     return batches;
 }
 
-struct entry {
-    std::string name;
-    std::function<void(benchmark::State&)> time;
-    std::function<void(std::size_t)> repeat;
-};
+using bench::entry;
 
 // Registers operation `op` for every implementation: kernel(in) is called with each one's inputs.
 template <class Kernel>
@@ -73,21 +67,4 @@ std::vector<entry> all_operations() {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-    const std::vector<entry> table = all_operations();
-    if (argc == 4 && std::strcmp(argv[1], "--repeat") == 0) {
-        for (const entry& e : table)
-            if (e.name == argv[2]) {
-                e.repeat(std::strtoull(argv[3], nullptr, 10));
-                return 0;
-            }
-        std::fprintf(stderr, "ctga_bench: no operation named %s\n", argv[2]);
-        return 2;
-    }
-    for (const entry& e : table) benchmark::RegisterBenchmark(e.name.c_str(), e.time);
-    benchmark::Initialize(&argc, argv);
-    if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
-    benchmark::RunSpecifiedBenchmarks();
-    benchmark::Shutdown();
-    return 0;
-}
+int main(int argc, char** argv) { return bench::run(all_operations(), argc, argv); }

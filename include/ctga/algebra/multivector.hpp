@@ -19,6 +19,7 @@
 #include "ctga/algebra/fixed_string.hpp"
 #include "ctga/algebra/layout.hpp"
 #include "ctga/support/inline.hpp"
+#include "ctga/support/uninitialized.hpp"
 
 namespace ctga {
 
@@ -120,7 +121,9 @@ public:
     [[nodiscard]] static constexpr std::size_t size() noexcept { return Layout.size(); }
 
     // Zero.
-    constexpr multivector() noexcept = default;
+    constexpr multivector() noexcept : c_{} {}
+    // Not initialised: for storage that is written before it is read (support/uninitialized.hpp).
+    constexpr explicit multivector(uninitialized_t) noexcept {}
 
     // One coefficient per blade of the layout, in its order and orientation:
     //   cl031::mv<double, "e2e3", "e3e1", "e1e2", "e1e", "e2e", "e3e"> s{wx, wy, wz, vx, vy, vz};
@@ -138,7 +141,7 @@ public:
     // A copy, with the sign flipped where the two types orient a blade differently. (A template
     // is never the copy constructor, so same-layout copies stay trivial.)
     template <auto L2>
-    constexpr multivector(const multivector<Alg, T, L2>& x) noexcept {
+    constexpr multivector(const multivector<Alg, T, L2>& x) noexcept : c_{} {
         constexpr int missing = detail::first_missing<L2, Layout>();
         if constexpr (missing >= 0) {
             (void)sizeof(detail::target_lacks<Alg, L2.masks[missing]>);
@@ -189,7 +192,7 @@ public:
     }
 
 private:
-    std::array<T, size()> c_{};
+    std::array<T, size()> c_;  // zero unless constructed from uninitialized
 };
 
 template <class X>

@@ -38,6 +38,7 @@
 #include "ctga/support/checked.hpp"
 #include "ctga/support/inline.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/uninitialized.hpp"
 
 namespace ctga::chains {
 
@@ -52,10 +53,16 @@ using body_wrenches = std::array<coscrew<T>, Tree::size>;  // external wrench on
 
 template <class Tree, class T = double>
 struct kinematics {
-    std::array<motor_map<T>, Tree::size> X{};     // body i in its parent's frame
-    std::array<motor_map<T>, Tree::size> pose{};  // body i in the world frame
-    std::array<screw<T>, Tree::size> v{};         // velocity, body frame
-    std::array<screw<T>, Tree::size> a{};         // acceleration (spatial, without gravity), body frame
+    std::array<motor_map<T>, Tree::size> X;     // body i in its parent's frame
+    std::array<motor_map<T>, Tree::size> pose;  // body i in the world frame
+    std::array<screw<T>, Tree::size> v;         // velocity, body frame
+    std::array<screw<T>, Tree::size> a;         // acceleration (spatial, without gravity), body frame
+
+    // Zero.
+    constexpr kinematics() noexcept : X{}, pose{}, v{}, a{} {}
+    // Not cleared: for a pass that writes every body's numbers it reads (support/uninitialized.hpp).
+    constexpr explicit kinematics(uninitialized_t) noexcept
+        : v(uninitialized_array<screw<T>, Tree::size>()), a(uninitialized_array<screw<T>, Tree::size>()) {}
 };
 
 namespace algorithm_detail {
@@ -104,56 +111,56 @@ constexpr std::size_t depth_of(std::size_t i) {
     return d;
 }
 
-// The forward pass of §4.1/§5.3: maps, world poses (when Poses), velocities and accelerations
-// (as asked), then then(body, k) while the body's numbers are at hand (RNEA's forces). RNEA and
-// ABA need no world poses: only each body's map in its parent.
+// The forward pass of §4.1/§5.3 into k: maps, world poses (when Poses), velocities and
+// accelerations (as asked), then then(body, k) while the body's numbers are at hand (RNEA's
+// forces). RNEA and ABA need no world poses: only each body's map in its parent. Every number
+// asked for is written before it is read, so k may start uninitialized.
 struct no_body_work {
     template <class B, class K>
     constexpr void operator()(B, const K&) const noexcept {}
 };
 template <pass What, bool Poses, class Tree, class T, class Then = no_body_work>
-constexpr kinematics<Tree, T> forward_pass(const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
-                                           const T* qdd, const screw<T>& a_world, Then&& then = {}) noexcept {
-    kinematics<Tree, T> k;
+constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
+                            const T* qdd, const screw<T>& a_world, Then&& then = {}) noexcept {
     forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         constexpr int p = Tree::parent[i];
         using J = typename Tree::template joint_at<i>;
         const auto& L = m.template link<i>();
-        k.X[i] = joint_map<i>(m, q);
+        const motor_map<T> X = joint_map<i>(m, q);  // used from registers, stored once
+        k.X[i] = X;
         if constexpr (!Poses) {
         } else if constexpr (p < 0) {
-            k.pose[i] = k.X[i];
+            k.pose[i] = X;
         } else {
             const motor_map<T>& W = k.pose[p];
-            k.pose[i] = {joint_detail::multiply(W.R, k.X[i].R), linear3::add(linear3::apply(W.R, k.X[i].t), W.t)};
+            k.pose[i] = {joint_detail::multiply(W.R, X.R), linear3::add(linear3::apply(W.R, X.t), W.t)};
         }
         if constexpr (What != pass::poses) {
             constexpr std::size_t o = Tree::v_offset[i];
             if constexpr (J::nv == 0) {
                 if constexpr (p < 0) {
                     k.v[i] = screw<T>{};
-                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(k.X[i], a_world);
+                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, a_world);
                 } else {
-                    k.v[i] = transform_inverse(k.X[i], k.v[p]);
-                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(k.X[i], k.a[p]);
+                    k.v[i] = transform_inverse(X, k.v[p]);
+                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, k.a[p]);
                 }
             } else {
                 const auto vJ = joint_screw<J>(L.joint, qd + o);
                 if constexpr (p < 0) {
                     k.v[i] = vJ;  // the world does not move
                     if constexpr (What == pass::accelerations)
-                        k.a[i] = transform_inverse(k.X[i], a_world) + joint_screw<J>(L.joint, qdd + o);
+                        k.a[i] = transform_inverse(X, a_world) + joint_screw<J>(L.joint, qdd + o);
                 } else {
-                    k.v[i] = transform_inverse(k.X[i], k.v[p]) + vJ;
+                    k.v[i] = transform_inverse(X, k.v[p]) + vJ;
                     if constexpr (What == pass::accelerations)
-                        k.a[i] = transform_inverse(k.X[i], k.a[p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
+                        k.a[i] = transform_inverse(X, k.a[p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
                 }
             }
         }
         then(body, k);
     });
-    return k;
 }
 
 }  // namespace algorithm_detail
@@ -165,20 +172,26 @@ struct forward_kinematics_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m,
                                                                    const configuration<Tree, T>& q) const noexcept {
-        return algorithm_detail::forward_pass<algorithm_detail::pass::poses, true>(m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
+        kinematics<Tree, T> k;  // v, a: zero
+        algorithm_detail::forward_pass<algorithm_detail::pass::poses, true>(k, m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
+        return k;
     }
     // … and every body's velocity screw, body frame.
     template <class Tree, class T>
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                                    const joint_vector<Tree, T>& qd) const noexcept {
-        return algorithm_detail::forward_pass<algorithm_detail::pass::velocities, true>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+        kinematics<Tree, T> k;  // a: zero
+        algorithm_detail::forward_pass<algorithm_detail::pass::velocities, true>(k, m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+        return k;
     }
     // … and every body's acceleration (the true spatial acceleration, gravity not included).
     template <class Tree, class T>
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                                    const joint_vector<Tree, T>& qd,
                                                                    const joint_vector<Tree, T>& qdd) const noexcept {
-        return algorithm_detail::forward_pass<algorithm_detail::pass::accelerations, true>(m, q, qd.data(), qdd.data(), screw<T>{});
+        kinematics<Tree, T> k{uninitialized};  // every member written
+        algorithm_detail::forward_pass<algorithm_detail::pass::accelerations, true>(k, m, q, qd.data(), qdd.data(), screw<T>{});
+        return k;
     }
 };
 inline constexpr forward_kinematics_t forward_kinematics{};
@@ -189,9 +202,10 @@ namespace algorithm_detail {
 template <class Tree, class T>
 constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
                                      const joint_vector<Tree, T>& qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
-    std::array<coscrew<T>, Tree::size> f;
-    const kinematics<Tree, T> k = forward_pass<pass::accelerations, false>(
-        m, q, qd.data(), qdd.data(), lift_gravity(m.gravity), [&](auto body, const kinematics<Tree, T>& kb) {
+    auto f = uninitialized_array<coscrew<T>, Tree::size>();
+    kinematics<Tree, T> k{uninitialized};
+    forward_pass<pass::accelerations, false>(
+        k, m, q, qd.data(), qdd.data(), lift_gravity(m.gravity), [&](auto body, const kinematics<Tree, T>& kb) {
             constexpr std::size_t i = decltype(body)::value;
             const auto& N = m.template link<i>().inertia;
             // f_i = N a_i + v_i ×* (N v_i) − f_ext
@@ -276,8 +290,9 @@ struct crba_t {
         using namespace algorithm_detail;
         std::array<motor_map<T>, Tree::size> X;
         forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
-        std::array<body_inertia<T>, Tree::size> Nc;
-        forward<Tree::size>([&](auto body) { Nc[decltype(body)::value] = m.template link<decltype(body)::value>().inertia; });
+        std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return std::array<body_inertia<T>, Tree::size>{m.template link<I>().inertia...};
+        }(std::make_index_sequence<Tree::size>{});
         backward<Tree::size>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;
             constexpr int p = Tree::parent[i];
@@ -321,25 +336,27 @@ constexpr std::size_t null_component() {
 template <class Tree, class T>
 constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
                                     const joint_vector<Tree, T>& tau, const body_wrenches<Tree, T>* f_ext) noexcept {
-    const kinematics<Tree, T> k = forward_pass<pass::velocities, false>(m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
-    std::array<articulated_inertia<T>, Tree::size> NA;
-    std::array<coscrew<T>, Tree::size> pA;
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        const auto& N = m.template link<i>().inertia;
-        NA[i] = articulated_inertia_of(N);
-        pA[i] = coadjoint(k.v[i], momentum(N, k.v[i]));
-        if (f_ext) pA[i] = pA[i] - (*f_ext)[i];
-    });
+    kinematics<Tree, T> k{uninitialized};
+    forward_pass<pass::velocities, false>(k, m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+    // N^A_i = N_i, p^A_i = v_i ×* (N_i v_i) − f_ext,i: each array built element by element
+    std::array<articulated_inertia<T>, Tree::size> NA = [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<articulated_inertia<T>, Tree::size>{articulated_inertia_of(m.template link<I>().inertia)...};
+    }(std::make_index_sequence<Tree::size>{});
+    std::array<coscrew<T>, Tree::size> pA = [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<coscrew<T>, Tree::size>{coscrew<T>(coadjoint(k.v[I], momentum(m.template link<I>().inertia, k.v[I])))...};
+    }(std::make_index_sequence<Tree::size>{});
+    if (f_ext)
+        for (std::size_t i = 0; i < Tree::size; ++i) pA[i] = pA[i] - (*f_ext)[i];
     // c_i = v_i × S_i q̇_i in the bracket's own sparse type: four blades for an axis joint (nv = 1, 6 only)
     const auto bias = [&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         using J = typename Tree::template joint_at<i>;
         return eval(bracket.formula(k.v[i], joint_screw<J>(m.template link<i>().joint, qd.data() + Tree::v_offset[i])));
     };
-    std::array<coscrew<T>, Tree::size> U;   // N^A S (1-dof joints)
-    std::array<T, Tree::size> D_inverse{};  // 1 / U(S)
-    std::array<T, Tree::size> u{};          // τ − p^A(S)
+    // written for the 1-dof joints, read for them only
+    auto U = uninitialized_array<coscrew<T>, Tree::size>();  // N^A S
+    std::array<T, Tree::size> D_inverse;                     // 1 / U(S)
+    std::array<T, Tree::size> u;                             // τ − p^A(S)
     backward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         constexpr int p = Tree::parent[i];
@@ -372,8 +389,8 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
             }
         }
     });
-    joint_vector<Tree, T> qdd{};
-    std::array<screw<T>, Tree::size> a;
+    joint_vector<Tree, T> qdd;  // every number written
+    auto a = uninitialized_array<screw<T>, Tree::size>();
     const screw<T> a_world = lift_gravity(m.gravity);
     forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
@@ -425,8 +442,9 @@ struct kinetic_energy_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr T operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                              const joint_vector<Tree, T>& qd) const noexcept {
-        const kinematics<Tree, T> k = algorithm_detail::forward_pass<algorithm_detail::pass::velocities, false>(
-            m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+        kinematics<Tree, T> k{uninitialized};
+        algorithm_detail::forward_pass<algorithm_detail::pass::velocities, false>(
+            k, m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
         T e = T(0);
         algorithm_detail::forward<Tree::size>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;

@@ -145,10 +145,12 @@ template <class T>
 // ---- the linear map of a motor (§2) ------------------------------------------------------
 
 // The linear map of the sandwich by a unit motor g = t r: rotation matrix R of r, translation t.
+// A plain aggregate like mat3: motor_map<T>{} is zero, a default-initialised one (an element
+// of an array of maps about to be filled) is not cleared.
 template <class T = double>
 struct motor_map {
-    mat3<T> R{};
-    vec3<T> t{};
+    mat3<T> R;
+    vec3<T> t;
 };
 
 // For g = t r (§3): r = α0 + α1 e2e3 + α2 e3e1 + α3 e1e2 is the quaternion (α0, α1, α2, α3) under

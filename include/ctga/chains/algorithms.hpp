@@ -95,10 +95,17 @@ CTGA_ALWAYS_INLINE constexpr motor_map<T> joint_map(const model<Tree, T>& m, con
     return J::motion(L.placement, L.joint, q.data() + Tree::q_offset[I]);
 }
 
-// −a_g = (0, −g): the world's acceleration in Featherstone's gravity trick (§5.3).
+// The world's acceleration in Featherstone's gravity trick (§5.3) is a pure translation, −g (or 0
+// for the true accelerations of forward kinematics): seen from a body on the world with map X
+// it is (0, Rᵀ(−g)) (X⁻¹ (0, a) = (Rᵀ 0, Rᵀ(a − t × 0))), 9m 6a instead of a screw's 24m 18a.
 template <class T>
-constexpr screw<T> lift_gravity(const vec3<T>& g) noexcept {
-    return screw<T>{T(0), T(0), T(0), -g[0], -g[1], -g[2]};
+CTGA_ALWAYS_INLINE constexpr screw<T> world_acceleration(const motor_map<T>& X, const vec3<T>& a) noexcept {
+    const vec3<T> r = linear3::apply_transposed(X.R, a);
+    return screw<T>{T(0), T(0), T(0), r[0], r[1], r[2]};
+}
+template <class T>
+constexpr vec3<T> minus(const vec3<T>& g) noexcept {
+    return {-g[0], -g[1], -g[2]};
 }
 
 enum class pass { poses, velocities, accelerations };
@@ -121,7 +128,7 @@ struct no_body_work {
 };
 template <pass What, bool Poses, class Tree, class T, class Then = no_body_work>
 constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
-                            const T* qdd, const screw<T>& a_world, Then&& then = {}) noexcept {
+                            const T* qdd, const vec3<T>& a_world, Then&& then = {}) noexcept {
     forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         constexpr int p = Tree::parent[i];
@@ -141,7 +148,7 @@ constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, con
             if constexpr (J::nv == 0) {
                 if constexpr (p < 0) {
                     k.v[i] = screw<T>{};
-                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, a_world);
+                    if constexpr (What == pass::accelerations) k.a[i] = world_acceleration(X, a_world);
                 } else {
                     k.v[i] = transform_inverse(X, k.v[p]);
                     if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, k.a[p]);
@@ -151,7 +158,7 @@ constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, con
                 if constexpr (p < 0) {
                     k.v[i] = vJ;  // the world does not move
                     if constexpr (What == pass::accelerations)
-                        k.a[i] = transform_inverse(X, a_world) + joint_screw<J>(L.joint, qdd + o);
+                        k.a[i] = world_acceleration(X, a_world) + joint_screw<J>(L.joint, qdd + o);
                 } else {
                     k.v[i] = transform_inverse(X, k.v[p]) + vJ;
                     if constexpr (What == pass::accelerations)
@@ -173,7 +180,7 @@ struct forward_kinematics_t {
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m,
                                                                    const configuration<Tree, T>& q) const noexcept {
         kinematics<Tree, T> k;  // v, a: zero
-        algorithm_detail::forward_pass<algorithm_detail::pass::poses, true>(k, m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), screw<T>{});
+        algorithm_detail::forward_pass<algorithm_detail::pass::poses, true>(k, m, q, static_cast<const T*>(nullptr), static_cast<const T*>(nullptr), vec3<T>{});
         return k;
     }
     // … and every body's velocity screw, body frame.
@@ -181,7 +188,7 @@ struct forward_kinematics_t {
     [[nodiscard]] constexpr kinematics<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                                    const joint_vector<Tree, T>& qd) const noexcept {
         kinematics<Tree, T> k;  // a: zero
-        algorithm_detail::forward_pass<algorithm_detail::pass::velocities, true>(k, m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+        algorithm_detail::forward_pass<algorithm_detail::pass::velocities, true>(k, m, q, qd.data(), static_cast<const T*>(nullptr), vec3<T>{});
         return k;
     }
     // … and every body's acceleration (the true spatial acceleration, gravity not included).
@@ -190,7 +197,7 @@ struct forward_kinematics_t {
                                                                    const joint_vector<Tree, T>& qd,
                                                                    const joint_vector<Tree, T>& qdd) const noexcept {
         kinematics<Tree, T> k{uninitialized};  // every member written
-        algorithm_detail::forward_pass<algorithm_detail::pass::accelerations, true>(k, m, q, qd.data(), qdd.data(), screw<T>{});
+        algorithm_detail::forward_pass<algorithm_detail::pass::accelerations, true>(k, m, q, qd.data(), qdd.data(), vec3<T>{});
         return k;
     }
 };
@@ -205,7 +212,7 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
     auto f = uninitialized_array<coscrew<T>, Tree::size>();
     kinematics<Tree, T> k{uninitialized};
     forward_pass<pass::accelerations, false>(
-        k, m, q, qd.data(), qdd.data(), lift_gravity(m.gravity), [&](auto body, const kinematics<Tree, T>& kb) {
+        k, m, q, qd.data(), qdd.data(), minus(m.gravity), [&](auto body, const kinematics<Tree, T>& kb) {
             constexpr std::size_t i = decltype(body)::value;
             const auto& N = m.template link<i>().inertia;
             // f_i = N a_i + v_i ×* (N v_i) − f_ext
@@ -337,7 +344,7 @@ template <class Tree, class T>
 constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
                                     const joint_vector<Tree, T>& tau, const body_wrenches<Tree, T>* f_ext) noexcept {
     kinematics<Tree, T> k{uninitialized};
-    forward_pass<pass::velocities, false>(k, m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+    forward_pass<pass::velocities, false>(k, m, q, qd.data(), static_cast<const T*>(nullptr), vec3<T>{});
     // N^A_i = N_i, p^A_i = v_i ×* (N_i v_i) − f_ext,i: each array built element by element
     std::array<articulated_inertia<T>, Tree::size> NA = [&]<std::size_t... I>(std::index_sequence<I...>) {
         return std::array<articulated_inertia<T>, Tree::size>{articulated_inertia_of(m.template link<I>().inertia)...};
@@ -391,7 +398,7 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
     });
     joint_vector<Tree, T> qdd;  // every number written
     auto a = uninitialized_array<screw<T>, Tree::size>();
-    const screw<T> a_world = lift_gravity(m.gravity);
+    const vec3<T> a_world = minus(m.gravity);
     forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         constexpr int p = Tree::parent[i];
@@ -399,7 +406,7 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
         using J = typename Tree::template joint_at<i>;
         const auto& L = m.template link<i>();
         screw<T> a_parent;  // X_i⁻¹ a_λ
-        if constexpr (p < 0) a_parent = transform_inverse(k.X[i], a_world);
+        if constexpr (p < 0) a_parent = world_acceleration(k.X[i], a_world);
         else a_parent = transform_inverse(k.X[i], a[p]);
         if constexpr (J::nv == 0) {
             a[i] = a_parent;
@@ -444,7 +451,7 @@ struct kinetic_energy_t {
                                              const joint_vector<Tree, T>& qd) const noexcept {
         kinematics<Tree, T> k{uninitialized};
         algorithm_detail::forward_pass<algorithm_detail::pass::velocities, false>(
-            k, m, q, qd.data(), static_cast<const T*>(nullptr), screw<T>{});
+            k, m, q, qd.data(), static_cast<const T*>(nullptr), vec3<T>{});
         T e = T(0);
         algorithm_detail::forward<Tree::size>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;

@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # The benchmark suite, its instruction counts and its report:
 #   bash tools/bench.sh
-# builds ctga_bench (Release), runs every <operation>/<implementation> 5 times (medians), counts
-# the instructions of one call of each ctga, spatial and Eigen kernel with callgrind, and renders
-# docs/benchmarks.md with docs/img/benchmarks.svg. The compile-time tables come from
-# tools/compile-cost.sh when it has been run (its fragment in $BUILD_DIR/bench/).
+# builds ctga_bench (Release), runs every <operation>/<implementation> 7 times (medians; the
+# repetitions of all benchmarks interleaved at random, so that a noisy spell of a shared machine
+# does not land on one benchmark), counts the instructions of one call of each ctga, spatial
+# and Eigen kernel with callgrind, and renders docs/benchmarks.md with docs/img/benchmarks.svg.
+# The compile-time tables come from tools/compile-cost.sh when it has been run (its fragment in
+# $BUILD_DIR/bench/).
 # BUILD_DIR overrides the build tree (default build/). Run it on a quiet machine.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -17,7 +19,7 @@ cmake --build "$BUILD_DIR" --target ctga_bench -j"$(nproc)"
 out=$BUILD_DIR/bench
 mkdir -p "$out" docs/img
 
-"$out/ctga_bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_min_time=0.2 \
+"$out/ctga_bench" --benchmark_repetitions=7 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true --benchmark_min_time=0.2 \
     --benchmark_out="$out/results.json" --benchmark_out_format=json
 
 # instructions of one call: callgrind counts inside the kernel only (--toggle-collect)
@@ -36,7 +38,7 @@ done
 # kinematic trees: ctga_chains_bench, its instructions, and the scaling executables (1–64 bodies)
 cmake --build "$BUILD_DIR" --target ctga_chains_bench ctga_chains_scaling_small ctga_chains_scaling_32 \
     ctga_chains_scaling_64 -j"$(nproc)"
-"$out/ctga_chains_bench" --benchmark_repetitions=5 --benchmark_report_aggregates_only=true --benchmark_min_time=0.2 \
+"$out/ctga_chains_bench" --benchmark_repetitions=7 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true --benchmark_min_time=0.2 \
     --benchmark_out="$out/chains.json" --benchmark_out_format=json
 : >"$out/chains_instructions.txt"
 for tree in arm7 chain30 tree; do
@@ -50,7 +52,7 @@ for tree in arm7 chain30 tree; do
 done
 scaling=()
 for group in small 32 64; do
-    "$out/ctga_chains_scaling_$group" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+    "$out/ctga_chains_scaling_$group" --benchmark_repetitions=3 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
         --benchmark_min_time=0.1 --benchmark_out="$out/chains_scaling_$group.json" --benchmark_out_format=json
     scaling+=("$out/chains_scaling_$group.json")
 done

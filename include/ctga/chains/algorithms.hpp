@@ -134,8 +134,7 @@ constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, con
         constexpr int p = Tree::parent[i];
         using J = typename Tree::template joint_at<i>;
         const auto& L = m.template link<i>();
-        const motor_map<T> X = joint_map<i>(m, q);  // used from registers, stored once
-        k.X[i] = X;
+        const motor_map<T> X = joint_map<i>(m, q);  // used from here, stored in k.X after the body's work
         if constexpr (!Poses) {
         } else if constexpr (p < 0) {
             k.pose[i] = X;
@@ -167,6 +166,8 @@ constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, con
             }
         }
         then(body, k);
+        // last: a copy of X read while its parts still sit in the store buffer stalls store forwarding
+        k.X[i] = X;
     });
 }
 

@@ -32,6 +32,16 @@ inline constexpr auto motion_lhs = formula([](auto N, auto s, auto sdot) {
     return (N ^ lift(sdot)) + half * ((bar(x) * N - N * bar(x)) ^ x);
 });
 
+// The same equation solved, as one formula of N, M, s and W (its value a lifted screw):
+//   ṡ = E ∨ (M ∧ (W − {s, A ∨ (N ∧ s)}))
+// acceleration() below evaluates it in two typed steps; this form is what ctga::jacobian
+// differentiates (∂ṡ/∂s, ∂ṡ/∂W, ∂ṡ/∂N: operations/jacobian.hpp).
+inline constexpr auto motion_rate = formula([](auto N, auto M, auto s, auto W) {
+    const auto P = invariants::A & (N ^ lift(s));
+    const auto x = bar(lift(s));
+    return invariants::E & (M ^ (W - half * (x * P - P * x)));
+});
+
 // ṡ from N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, all four quantities in one frame. M is any mobility
 // (36 blades: a general 6×6 inverse inertia) or a rigid body's body_mobility, solved about the
 // centre of mass (inertia.hpp: E ∨ (M ∧ P) = t (E ∨ (M_c ∧ (t̄* P t̄))) t*, 24m 18a instead of 36m 30a).

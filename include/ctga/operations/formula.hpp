@@ -214,11 +214,13 @@ template <int Divisor>
 inline constexpr scalar_over_t<Divisor> scalar_over{};
 
 // Multiplications and additions of the code an expression type runs when evaluated into
-// Target's blades (its own canonical blades by default), intermediates included.
+// Target's blades (its own canonical blades by default), intermediates included. For a computed
+// value that carries its price (a sparse_jacobian, operations/jacobian.hpp): that price.
 template <class E, class Target = void>
 inline constexpr expr::cost cost_of = [] {
     using D = std::remove_cvref_t<E>;
-    if constexpr (std::is_void_v<Target>) return expr::program<typename D::node_type, D::layout>::price;
+    if constexpr (requires { D::price; }) return D::price;
+    else if constexpr (std::is_void_v<Target>) return expr::program<typename D::node_type, D::layout>::price;
     else return expr::program<typename D::node_type, Target::layout>::price;
 }();
 

@@ -1,0 +1,249 @@
+// Exact Jacobians of formulas, at compile time.
+//
+// A formula's value is a polynomial in its arguments' components (every node of the engine is
+// one, expr/derivative.hpp), so its derivative with respect to one component of one argument
+// is again an expression over the same leaves: expr::derive_t. ctga::jacobian builds one such
+// expression per component of the chosen argument (a column), lets the engine find each
+// column's structurally non-zero rows (the blades its normal form can make non-zero) and
+// evaluates every column as straight-line code:
+//
+//   auto J = ctga::jacobian<1>(ctga::momentum.formula, N, s);       // ∂P/∂s: 6 × 6, N's pattern
+//   double x = J(r, c);                                              // ∂ out[r] / ∂ s[c]
+//   auto rows = J.dense();                                           // row-major std::array
+//   constexpr auto price = ctga::cost_of<decltype(J)>;              // what it runs
+//
+// Rows are the components of the value in its canonical layout, or of a Target multivector type
+// (jacobian<K, Target>: its order and orientation, e.g. a screw's (ω, v)); columns the
+// components of argument K in its own type's order, or, for a parametrised argument such as
+// body_inertia, its parameters in parameters() order. The pattern (which (row, column) entries
+// can be non-zero for some input) is a compile-time constant of the result's type; only those
+// entries are stored and computed.
+//
+// Only formulas are differentiated: the non-polynomial steps of the library (a division by a
+// scalar, sqrt, exp and log of screws, renormalisation) are functions outside formulas and have
+// no derivative here; jacobian() of anything but a formula or an operation is a compile error.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <tuple>
+#include <type_traits>
+#include <utility>
+
+#include "ctga/expr/derivative.hpp"
+#include "ctga/operations/formula.hpp"
+#include "ctga/support/inline.hpp"
+
+namespace ctga {
+
+// Which (row, column) entries of a Jacobian are structurally non-zero, column by column.
+template <std::size_t Rows, std::size_t Cols, std::size_t NonZeros>
+struct jacobian_pattern {
+    std::array<std::uint16_t, NonZeros> row{};
+    std::array<std::uint16_t, NonZeros> col{};
+    std::array<std::uint32_t, Cols + 1> col_begin{};  // column c's entries: [col_begin[c], col_begin[c + 1])
+
+    static constexpr std::size_t rows = Rows, cols = Cols, non_zeros = NonZeros;
+    // the entry's index in the values, −1 when (r, c) is a structural zero
+    [[nodiscard]] constexpr int index(std::size_t r, std::size_t c) const noexcept {
+        for (std::size_t k = col_begin[c]; k < col_begin[c + 1]; ++k)
+            if (row[k] == r) return static_cast<int>(k);
+        return -1;
+    }
+};
+
+// A Jacobian with the compile-time Pattern: the values of its structurally non-zero entries.
+template <class T, auto Pattern, expr::cost Price>
+struct sparse_jacobian {
+    using scalar_type = T;
+    static constexpr auto pattern = Pattern;
+    static constexpr std::size_t rows = Pattern.rows, cols = Pattern.cols, non_zeros = Pattern.non_zeros;
+    static constexpr expr::cost price = Price;
+
+    std::array<T, non_zeros> values{};
+
+    // ∂ out[r] / ∂ x[c] (zero where the pattern has no entry).
+    [[nodiscard]] constexpr T operator()(std::size_t r, std::size_t c) const noexcept {
+        const int k = Pattern.index(r, c);
+        return k < 0 ? T(0) : values[static_cast<std::size_t>(k)];
+    }
+    [[nodiscard]] static constexpr bool structurally_nonzero(std::size_t r, std::size_t c) noexcept {
+        return Pattern.index(r, c) >= 0;
+    }
+    // Row-major, every entry (for Eigen: Eigen::Map<const Eigen::Matrix<T, rows, cols, Eigen::RowMajor>>).
+    [[nodiscard]] constexpr std::array<std::array<T, cols>, rows> dense() const noexcept {
+        std::array<std::array<T, cols>, rows> out{};
+        for (std::size_t c = 0; c < cols; ++c)
+            for (std::size_t k = Pattern.col_begin[c]; k < Pattern.col_begin[c + 1]; ++k) out[Pattern.row[k]][c] = values[k];
+        return out;
+    }
+};
+
+namespace jacobian_detail {
+
+// Column c of the Jacobian: component `comp` of leaf `leaf`.
+struct column_source {
+    std::size_t leaf, comp;
+};
+
+// The leaves and components of argument K of a formula taking Args.
+template <std::size_t K, class... Args>
+struct argument_columns {
+    using A = std::remove_cvref_t<std::tuple_element_t<K, std::tuple<Args...>>>;
+    static constexpr std::size_t first = expr::first_leaf<Args...>[K];
+    static constexpr auto sizes = [] {
+        if constexpr (expr::shape_of<A>::parametrised) {
+            using P = typename expr::shape_of<A>::parameters;
+            return [&]<std::size_t... J>(std::index_sequence<J...>) {
+                return std::array<std::size_t, sizeof...(J)>{std::remove_cvref_t<std::tuple_element_t<J, P>>::size()...};
+            }(std::make_index_sequence<std::tuple_size_v<P>>{});
+        } else {
+            return std::array<std::size_t, 1>{A::size()};
+        }
+    }();
+    static constexpr std::size_t count = [] {
+        std::size_t n = 0;
+        for (std::size_t s : sizes) n += s;
+        return n;
+    }();
+    static constexpr std::array<column_source, count> columns = [] {
+        std::array<column_source, count> out{};
+        std::size_t c = 0;
+        for (std::size_t p = 0; p < sizes.size(); ++p)
+            for (std::size_t j = 0; j < sizes[p]; ++j) out[c++] = {first + p, j};
+        return out;
+    }();
+};
+
+// The rows of RowLayout that column node D can make non-zero, as a layout in RowLayout's order
+// and orientation, and where each sits in RowLayout.
+template <auto RowLayout, class D>
+struct column_rows {
+    static constexpr auto value_layout = [] {
+        if constexpr (expr::is_zero_node<D>) return expr::no_blades;
+        else return expr::node_layout<D>;
+    }();
+    static constexpr std::size_t count = [] {
+        std::size_t n = 0;
+        for (std::size_t r = 0; r < RowLayout.size(); ++r) n += value_layout.contains(RowLayout.masks[r]);
+        return n;
+    }();
+    static constexpr layout<count> rows = [] {
+        layout<count> l;
+        std::size_t k = 0;
+        for (std::size_t r = 0; r < RowLayout.size(); ++r)
+            if (value_layout.contains(RowLayout.masks[r])) l.masks[k] = RowLayout.masks[r], l.signs[k] = RowLayout.signs[r], ++k;
+        return l;
+    }();
+    static constexpr std::array<std::uint16_t, count> index = [] {
+        std::array<std::uint16_t, count> out{};
+        std::size_t k = 0;
+        for (std::size_t r = 0; r < RowLayout.size(); ++r)
+            if (value_layout.contains(RowLayout.masks[r])) out[k++] = static_cast<std::uint16_t>(r);
+        return out;
+    }();
+    static constexpr expr::cost price = [] {
+        if constexpr (count == 0) return expr::cost{};
+        else return expr::program<D, rows>::price;
+    }();
+};
+
+template <class Node, auto RowLayout, class Columns, std::size_t C>
+using column_t = column_rows<RowLayout, expr::derive_t<Node, Columns::columns[C].leaf, Columns::columns[C].comp>>;
+
+// Column C's entries of the pattern, from entry k on.
+template <class Col, class Pattern>
+constexpr std::size_t fill_column(Pattern& p, std::size_t k, std::size_t c) {
+    p.col_begin[c] = static_cast<std::uint32_t>(k);
+    for (std::size_t r = 0; r < Col::count; ++r, ++k) {
+        p.row[k] = Col::index[r];
+        p.col[k] = static_cast<std::uint16_t>(c);
+    }
+    return k;
+}
+
+template <class Node, auto RowLayout, class Columns, class Cs = std::make_index_sequence<Columns::count>>
+struct assembled;
+template <class Node, auto RowLayout, class Columns, std::size_t... C>
+struct assembled<Node, RowLayout, Columns, std::index_sequence<C...>> {
+    static constexpr std::size_t cols = Columns::count;
+    static constexpr std::size_t non_zeros = (column_t<Node, RowLayout, Columns, C>::count + ... + 0);
+    static constexpr auto pattern = [] {
+        jacobian_pattern<RowLayout.size(), cols, non_zeros> p;
+        std::size_t k = 0;
+        ((k = fill_column<column_t<Node, RowLayout, Columns, C>>(p, k, C)), ...);
+        p.col_begin[cols] = static_cast<std::uint32_t>(k);
+        return p;
+    }();
+    static constexpr expr::cost price = (column_t<Node, RowLayout, Columns, C>::price + ... + expr::cost{});
+};
+
+// The rows: Target's layout, or the value's canonical one.
+template <class E, class Target>
+constexpr auto row_layout_of() {
+    if constexpr (std::is_void_v<Target>) {
+        return E::layout;
+    } else {
+        static_assert(detail::first_missing<E::layout, Target::layout>() < 0,
+                      "ctga::jacobian: the Target type lacks a blade the formula's value can make non-zero");
+        return Target::layout;
+    }
+}
+
+// Column C evaluated into its entries of J.
+template <std::size_t C, class Columns, auto RowLayout, class J, class E>
+CTGA_ALWAYS_INLINE constexpr void evaluate_column(J& out, const E& e) noexcept {
+    using Node = typename E::node_type;
+    using col = column_t<Node, RowLayout, Columns, C>;
+    if constexpr (col::count > 0) {
+        using D = expr::derive_t<Node, Columns::columns[C].leaf, Columns::columns[C].comp>;
+        const expression<typename E::algebra_type, typename E::scalar_type, D, typename E::leaves_type> column{e.leaves};
+        const auto v = column.template evaluate<typename E::scalar_type, col::rows>();
+        for (std::size_t r = 0; r < col::count; ++r) out.values[J::pattern.col_begin[C] + r] = v[r];
+    }
+}
+template <class Columns, auto RowLayout, class J, class E, std::size_t... C>
+CTGA_ALWAYS_INLINE constexpr void evaluate_columns(J& out, const E& e, std::index_sequence<C...>) noexcept {
+    (evaluate_column<C, Columns, RowLayout>(out, e), ...);
+}
+
+}  // namespace jacobian_detail
+
+namespace jacobian_detail {
+template <class X>
+struct formula_of {
+    static_assert(sizeof(X) == 0,
+                  "ctga::jacobian: differentiates a formula (ctga::formula(...)) or an operation (its .formula): a "
+                  "polynomial in its arguments; anything else (a division, sqrt, exp, log, renormalisation) has no "
+                  "compile-time derivative");
+};
+template <class F>
+struct formula_of<formula_t<F>> {
+    static constexpr const formula_t<F>& get(const formula_t<F>& f) noexcept { return f; }
+};
+template <class F, class Finish>
+struct formula_of<operation<F, Finish>> {
+    static constexpr const formula_t<F>& get(const operation<F, Finish>& op) noexcept { return op.formula; }
+};
+}  // namespace jacobian_detail
+
+// ∂ f(args...) / ∂ args[K]: the exact Jacobian, rows the value's components (canonical layout,
+// or Target's), columns the components (or parameters) of argument K. See the top of this file.
+template <std::size_t K, class Target = void, class F, formula_argument... Args>
+[[nodiscard]] constexpr auto jacobian(const F& f, const Args&... args) noexcept {
+    static_assert(K < sizeof...(Args), "ctga::jacobian: the formula has no argument K");
+    using A = std::remove_cvref_t<std::tuple_element_t<K, std::tuple<Args...>>>;
+    static_assert(multivector_type<A> || parametrised_operand<A>,
+                  "ctga::jacobian: argument K must be a multivector or a parametrised argument (body_inertia, …)");
+    const auto e = jacobian_detail::formula_of<F>::get(f)(args...);
+    using E = std::remove_cvref_t<decltype(e)>;
+    constexpr auto rows = jacobian_detail::row_layout_of<E, Target>();
+    using columns = jacobian_detail::argument_columns<K, Args...>;
+    using all = jacobian_detail::assembled<typename E::node_type, rows, columns>;
+    sparse_jacobian<typename E::scalar_type, all::pattern, all::price> J;
+    jacobian_detail::evaluate_columns<columns, rows>(J, e, std::make_index_sequence<columns::count>{});
+    return J;
+}
+
+}  // namespace ctga

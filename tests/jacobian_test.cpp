@@ -1,0 +1,241 @@
+// Exact compile-time Jacobians (ctga::jacobian, operations/jacobian.hpp) against references that
+// share nothing with the engine's differentiation: the same formula run on forward-mode dual
+// numbers (tests/support/dual.hpp), and central finite differences. The compile-time pattern is
+// checked both ways on random inputs: every entry outside it has an exactly zero dual derivative,
+// and every entry in it is non-zero for some input.
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdio>
+#include <random>
+#include <tuple>
+#include <utility>
+
+#include <ctga/ctga.hpp>
+#include <ctga/operations/jacobian.hpp>
+
+#include "support/catch.hpp"
+#include "support/dual.hpp"
+
+namespace {
+
+using namespace ctga;
+
+template <std::size_t N>
+using dual = ctga_test::dual<N>;
+
+// ---- random inputs ---------------------------------------------------------------------------
+
+struct random_source {
+    std::mt19937_64 rng;
+    double operator()() { return std::uniform_real_distribution<double>(-1.0, 1.0)(rng); }
+};
+
+template <class X>
+X random_multivector(random_source& r) {
+    X x;
+    for (std::size_t i = 0; i < X::size(); ++i) x[i] = r();
+    return x;
+}
+mass_properties<double> random_body(random_source& r) {
+    const double m = 1.5 + r();
+    const vec3<double> c{0.3 * r(), 0.3 * r(), 0.3 * r()};
+    const double a = 1.0 + 0.2 * r(), b = 1.4 + 0.2 * r(), d = 1.9 + 0.2 * r();
+    const double xy = 0.1 * r(), xz = 0.1 * r(), yz = 0.1 * r();
+    auto p = make_mass_properties(m, c, mat3<double>{{{a, xy, xz}, {xy, b, yz}, {xz, yz, d}}});
+    REQUIRE(p);
+    return *p;
+}
+
+// ---- an argument in dual numbers: argument K's components (or parameters) seeded in order -----
+
+template <std::size_t N, class X>
+auto to_dual(const X& x, bool seed) {
+    if constexpr (multivector_type<X>) {
+        multivector<typename X::algebra_type, dual<N>, X::layout> out;
+        for (std::size_t i = 0; i < X::size(); ++i) out[i] = seed ? dual<N>::variable(x[i], i) : dual<N>(x[i]);
+        return out;
+    } else {  // a parametrised argument: body_inertia<double> → body_inertia<dual<N>>
+        using P = decltype(x.parameters());
+        auto out = [&]<template <class> class Tpl>(const Tpl<double>*) { return Tpl<dual<N>>{}; }(&x);
+        const auto dst = out.parameters();
+        std::size_t k = 0;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            (
+                [&] {
+                    const auto& from = std::get<I>(x.parameters());
+                    auto& to = const_cast<std::remove_cvref_t<decltype(std::get<I>(dst))>&>(std::get<I>(dst));
+                    for (std::size_t j = 0; j < from.size(); ++j, ++k)
+                        to[j] = seed ? dual<N>::variable(from[j], k) : dual<N>(from[j]);
+                }(),
+                ...);
+        }(std::make_index_sequence<std::tuple_size_v<P>>{});
+        return out;
+    }
+}
+
+template <class Target, class T>
+using rebound = multivector<typename Target::algebra_type, T, Target::layout>;
+
+// max |a − b| / max |b| over a Jacobian's entries.
+struct comparison {
+    double max_diff = 0, scale = 0;
+    [[nodiscard]] double relative() const { return scale > 0 ? max_diff / scale : max_diff; }
+};
+
+// ∂f/∂args[K] exactly and by dual numbers; the pattern against the dual derivatives.
+template <std::size_t K, class Target, class F, class... Args>
+comparison against_dual(const F& f, std::array<std::array<bool, 64>, 64>& seen_nonzero, const Args&... args) {
+    const auto J = jacobian<K, Target>(f, args...);
+    constexpr std::size_t n = decltype(J)::cols;
+    const auto dual_args = [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return std::make_tuple(to_dual<n>(args, I == K)...);
+    }(std::index_sequence_for<Args...>{});
+    const auto value = std::apply([&](const auto&... a) { return rebound<Target, dual<n>>(f(a...)); }, dual_args);
+    comparison out;
+    for (std::size_t r = 0; r < decltype(J)::rows; ++r)
+        for (std::size_t c = 0; c < n; ++c) {
+            const double exact = J(r, c), reference = value[r].d[c];
+            if (!J.structurally_nonzero(r, c)) CHECK(reference == 0.0);  // the pattern misses nothing
+            else if (exact != 0.0) seen_nonzero[r][c] = true;
+            out.max_diff = std::max(out.max_diff, std::abs(exact - reference));
+            out.scale = std::max(out.scale, std::abs(reference));
+        }
+    return out;
+}
+
+// Every entry of the pattern was non-zero for some input.
+template <class J>
+void pattern_is_tight(const std::array<std::array<bool, 64>, 64>& seen) {
+    std::size_t never = 0;
+    for (std::size_t r = 0; r < J::rows; ++r)
+        for (std::size_t c = 0; c < J::cols; ++c)
+            if (J::structurally_nonzero(r, c) && !seen[r][c]) ++never;
+    CHECK(never == 0);
+}
+
+// Runs against_dual on `draws` random inputs made by make(); the worst relative difference.
+template <std::size_t K, class Target, class F, class Make>
+double check_formula(const F& f, Make make, int draws = 8) {
+    std::array<std::array<bool, 64>, 64> seen{};
+    double worst = 0;
+    random_source r{std::mt19937_64{0x5eed + K}};
+    using J = decltype(std::apply([&](const auto&... a) { return jacobian<K, Target>(f, a...); }, make(r)));
+    for (int i = 0; i < draws; ++i) {
+        const auto args = make(r);
+        const comparison c = std::apply([&](const auto&... a) { return against_dual<K, Target>(f, seen, a...); }, args);
+        worst = std::max(worst, c.relative());
+    }
+    pattern_is_tight<J>(seen);
+    return worst;
+}
+
+constexpr double dual_tolerance = 1e-14;
+
+// The measured agreement, printed for the record, then checked.
+bool within(const char* what, double relative, double tolerance) {
+    std::printf("jacobian %-40s max |exact - dual| / max |dual| = %.2e\n", what, relative);
+    return relative <= tolerance;
+}
+
+}  // namespace
+
+TEST_CASE("momentum P = A ∨ (N ∧ s): ∂P/∂s is N, ∂P/∂N is linear in s; both as dual numbers give", "[jacobian]") {
+    const auto make = [](random_source& r) {
+        return std::make_tuple(body_inertia_of(random_body(r)), random_multivector<screw<double>>(r));
+    };
+    CHECK(within("momentum.formula d/d arg 1", check_formula<1, coscrew<double>>(momentum.formula, make), dual_tolerance));
+    CHECK(within("momentum.formula d/d arg 0", check_formula<0, coscrew<double>>(momentum.formula, make), dual_tolerance));
+    // ∂P/∂s is N's own 6 × 6 matrix: 24 structurally non-zero entries (§2: [[I_o, Ĥ], [−Ĥ, m 1]])
+    random_source r{std::mt19937_64{1}};
+    const auto [N, s] = make(r);
+    const auto J = jacobian<1, coscrew<double>>(momentum.formula, N, s);
+    STATIC_REQUIRE(decltype(J)::non_zeros == 24);
+    STATIC_REQUIRE(cost_of<decltype(J)>.mul == 0);  // the entries are N's parameters, up to sign
+}
+
+TEST_CASE("kinetic energy, bracket, coadjoint: exact Jacobians agree with dual numbers", "[jacobian]") {
+    using scalar_blade = cl062::mv<double, "1">;
+    const auto inertia_and_screw = [](random_source& r) {
+        return std::make_tuple(body_inertia_of(random_body(r)), random_multivector<screw<double>>(r));
+    };
+    CHECK(within("kinetic_energy.formula d/d arg 1", check_formula<1, scalar_blade>(kinetic_energy.formula, inertia_and_screw), dual_tolerance));
+    CHECK(within("kinetic_energy.formula d/d arg 0", check_formula<0, scalar_blade>(kinetic_energy.formula, inertia_and_screw), dual_tolerance));
+    const auto two_screws = [](random_source& r) {
+        return std::make_tuple(random_multivector<screw<double>>(r), random_multivector<screw<double>>(r));
+    };
+    CHECK(within("bracket.formula d/d arg 0", check_formula<0, screw<double>>(bracket.formula, two_screws), dual_tolerance));
+    CHECK(within("bracket.formula d/d arg 1", check_formula<1, screw<double>>(bracket.formula, two_screws), dual_tolerance));
+    const auto screw_and_coscrew = [](random_source& r) {
+        return std::make_tuple(random_multivector<screw<double>>(r), random_multivector<coscrew<double>>(r));
+    };
+    CHECK(within("coadjoint.formula d/d arg 0", check_formula<0, coscrew<double>>(coadjoint.formula, screw_and_coscrew), dual_tolerance));
+    CHECK(within("coadjoint.formula d/d arg 1", check_formula<1, coscrew<double>>(coadjoint.formula, screw_and_coscrew), dual_tolerance));
+}
+
+TEST_CASE("the adjoint g s g*: Jacobians in the motor and in the screw agree with dual numbers", "[jacobian]") {
+    const auto motor_and_screw = [](random_source& r) {
+        return std::make_tuple(random_multivector<motor<double>>(r), random_multivector<screw<double>>(r));
+    };
+    CHECK(within("adjoint d/d arg 0", check_formula<0, screw<double>>(adjoint, motor_and_screw), dual_tolerance));
+    CHECK(within("adjoint d/d arg 1", check_formula<1, screw<double>>(adjoint, motor_and_screw), dual_tolerance));
+}
+
+TEST_CASE("the equations of motion ṡ = E ∨ (M ∧ (W − {s, A ∨ (N ∧ s)})): ∂ṡ/∂s, ∂ṡ/∂W, ∂ṡ/∂N", "[jacobian]") {
+    const auto body_state = [](random_source& r) {
+        const mass_properties<double> b = random_body(r);
+        return std::make_tuple(body_inertia_of(b), mobility_of(b), random_multivector<screw<double>>(r),
+                               random_multivector<wrench<double>>(r));
+    };
+    CHECK(within("motion_rate d/d arg 2", check_formula<2, lifted_screw<double>>(motion_rate, body_state), dual_tolerance));
+    CHECK(within("motion_rate d/d arg 3", check_formula<3, lifted_screw<double>>(motion_rate, body_state), dual_tolerance));
+    CHECK(within("motion_rate d/d arg 0", check_formula<0, lifted_screw<double>>(motion_rate, body_state), dual_tolerance));
+
+    // the formula's value is acceleration()'s
+    random_source r{std::mt19937_64{7}};
+    const auto [N, M, s, W] = body_state(r);
+    const screw<double> a = acceleration(N, M, s, W);
+    const lifted_screw<double> a_formula = motion_rate(N, M, s, W);
+    for (std::size_t i = 0; i < 6; ++i) CHECK(std::abs(a[i] - a_formula[i]) <= 1e-13 * (1 + std::abs(a[i])));
+
+    // central finite differences agree to their own truncation error (h = 1e-5: error ~ h²)
+    const auto J = jacobian<2, lifted_screw<double>>(motion_rate, N, M, s, W);
+    double worst = 0, scale = 0;
+    for (std::size_t c = 0; c < 6; ++c) {
+        const double h = 1e-5;
+        screw<double> up = s, down = s;
+        up[c] += h;
+        down[c] -= h;
+        const lifted_screw<double> fu = motion_rate(N, M, up, W), fd = motion_rate(N, M, down, W);
+        for (std::size_t row = 0; row < 6; ++row) {
+            worst = std::max(worst, std::abs((fu[row] - fd[row]) / (2 * h) - J(row, c)));
+            scale = std::max(scale, std::abs(J(row, c)));
+        }
+    }
+    std::printf("jacobian motion_rate d/ds against central differences (h = 1e-5): %.2e\n", worst / scale);
+    CHECK(worst / scale <= 1e-8);
+    CHECK(worst / scale > 0);  // finite differences are not exact: the comparison is a real one
+}
+
+TEST_CASE("a dense copy and the pattern's entries agree", "[jacobian]") {
+    random_source r{std::mt19937_64{3}};
+    const auto N = body_inertia_of(random_body(r));
+    const auto s = random_multivector<screw<double>>(r);
+    const auto J = jacobian<1, coscrew<double>>(momentum.formula, N, s);
+    const auto D = J.dense();
+    std::size_t zeros = 0;
+    for (std::size_t i = 0; i < 6; ++i)
+        for (std::size_t j = 0; j < 6; ++j) {
+            CHECK(D[i][j] == J(i, j));
+            zeros += !J.structurally_nonzero(i, j);
+            if (!J.structurally_nonzero(i, j)) CHECK(D[i][j] == 0.0);
+        }
+    CHECK(zeros == 12);
+    // N s by the Jacobian's matrix is the momentum itself (P is linear in s)
+    const coscrew<double> P = momentum(N, s);
+    for (std::size_t i = 0; i < 6; ++i) {
+        double x = 0;
+        for (std::size_t j = 0; j < 6; ++j) x += D[i][j] * s[j];
+        CHECK(std::abs(x - P[i]) <= 1e-14 * (1 + std::abs(P[i])));
+    }
+}

@@ -19,11 +19,14 @@
 // on the 6×6 matrix formalism, and their trajectories can be compared number for number.
 #pragma once
 
+#include <array>
 #include <concepts>
+#include <cstddef>
 
 #include "ctga/support/checked.hpp"
 #include "ctga/mechanics/dynamics.hpp"
 #include "ctga/mechanics/motor.hpp"
+#include "ctga/operations/jacobian.hpp"
 
 namespace ctga {
 
@@ -98,6 +101,34 @@ struct rigid_body_motion {
         if constexpr (Frame == frame::body) return ctga::acceleration(body, s, W);
         else if constexpr (Evaluation == fixed_frame_evaluation::in_space) return fixed_frame_rates(body, g, s, W).s_dot;
         else return fixed_frame_rates_about_body(body, g, s, W).s_dot;
+    }
+    // ∂ṡ/∂s, 6 × 6 row-major (screw components (ω, v) both ways), at the wrench applied at (g, s)
+    // (a wrench that depends on s contributes nothing here): the exact Jacobian of the EOM formula
+    // motion_rate (ctga::jacobian). In the fixed frame ṡ = H ṡ_b(H⁻¹ s) (dynamics.hpp), so
+    // ∂ṡ/∂s = H (∂ṡ_b/∂s_b) H⁻¹, column by column.
+    [[nodiscard]] constexpr std::array<std::array<T, 6>, 6> acceleration_jacobian(const motor<T>& g,
+                                                                               const screw<T>& s) const noexcept {
+        const ctga::wrench<T> W = applied(g, s);
+        if constexpr (Frame == frame::body) {
+            return jacobian<2, lifted_screw<T>>(motion_rate, body.Nb, body.M, s, W).dense();
+        } else {
+            const motor_map<T> G = map_of(g);
+            const auto Jb = jacobian<2, lifted_screw<T>>(motion_rate, body.Nb, body.M, transform_inverse(G, s),
+                                                         transform_inverse(G, W))
+                                .dense();
+            std::array<std::array<T, 6>, 6> J{};
+            for (std::size_t c = 0; c < 6; ++c) {
+                screw<T> e{};
+                e[c] = T(1);
+                const screw<T> u = transform_inverse(G, e);
+                screw<T> y{};
+                for (std::size_t r = 0; r < 6; ++r)
+                    for (std::size_t k = 0; k < 6; ++k) y[r] = y[r] + Jb[r][k] * u[k];
+                const screw<T> col = transform(G, y);
+                for (std::size_t r = 0; r < 6; ++r) J[r][c] = col[r];
+            }
+            return J;
+        }
     }
     [[nodiscard]] constexpr motor<T> motor_rate(const motor<T>& g, const screw<T>& s) const noexcept {
         if constexpr (Frame == frame::body) return half * g * s;

@@ -3,7 +3,7 @@
 
 usage: render_accuracy.py DATA_DIR STRESS_LOG OUT_MD IMG_DIR
 
-DATA_DIR holds work_precision.csv, energy_history.csv and far_from_origin.csv; STRESS_LOG is the
+DATA_DIR holds work_precision.csv, energy_history.csv, far_from_origin.csv and implicit_solvers.csv; STRESS_LOG is the
 printed output of the stress tests (integrators_test, integrator_stress_test), quoted verbatim.
 """
 import csv
@@ -166,6 +166,29 @@ def main():
             for p in (pts[0], pts[-1]) if pts else ():
                 lines.append(f"| {m} | {fr} | {p['h']:g} | {p['max_energy_error']:.1e} | {p['momentum_error']:.1e} | "
                              f"{p['attitude_error']:.1e} |")
+
+    solvers_csv = os.path.join(data, "implicit_solvers.csv")
+    if os.path.exists(solvers_csv):
+        rows = read(solvers_csv)
+        lines += ["", "## The implicit midpoint: Newton with the exact Jacobian against the fixed-point iteration", "",
+                  "ctga, T = 20 s, the work–precision step sizes. Newton's method uses ∂a/∂s from "
+                  "`ctga::jacobian` of the equations of motion (`rigid_body_motion::acceleration_jacobian`); "
+                  "the fixed-point iteration is the one before issue 16 (`implicit_solver::fixed_point`, "
+                  "used above so that the three representations run the same method). *converged*: steps "
+                  "completed of those asked; a step that does not converge is reported and ends the run.", "",
+                  "| frame | h | Newton: iterations/step | Newton: time/step | fixed point: iterations/step | "
+                  "fixed point: time/step | converged (Newton / fixed point) |",
+                  "| --- | --- | --- | --- | --- | --- | --- |"]
+        by = {(r["frame"], float(r["h"]), r["solver"]): r for r in rows}
+        for fr in ("body", "fixed"):
+            for h in sorted({float(r["h"]) for r in rows if r["frame"] == fr}, reverse=True):
+                n, fp = by.get((fr, h, "newton")), by.get((fr, h, "fixed_point"))
+                if not n or not fp:
+                    continue
+                conv = f"{n['converged_steps']}/{n['steps']} / {fp['converged_steps']}/{fp['steps']}"
+                lines.append(f"| {fr} | {h:g} | {float(n['iterations_per_step']):.2f} | "
+                             f"{float(n['seconds_per_step']) * 1e9:.0f} ns | {float(fp['iterations_per_step']):.2f} | "
+                             f"{float(fp['seconds_per_step']) * 1e9:.0f} ns | {conv} |")
 
     lines += ["", "## Energy against time", "",
               "The Dzhanibekov body over 10⁴ s in the body frame (ctga). RK4 and the Lie-group RK4 drift "

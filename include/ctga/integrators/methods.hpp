@@ -20,6 +20,7 @@
 #include <concepts>
 #include <cstddef>
 #include <limits>
+#include <optional>
 #include <utility>
 
 #include "ctga/integrators/model.hpp"
@@ -133,29 +134,46 @@ struct lie_rk4 {
 };
 
 namespace integrator_detail {
-// b ← A⁻¹ b for a 6×6 A, Gaussian elimination with partial pivoting; false when A is singular.
+// A 6×6 matrix factored once (P A = L U, partial pivoting) and solved for several right-hand sides.
 template <class T>
-constexpr bool solve6(std::array<std::array<T, 6>, 6> A, std::array<T, 6>& b) noexcept {
-    for (std::size_t c = 0; c < 6; ++c) {
-        std::size_t p = c;
-        for (std::size_t r = c + 1; r < 6; ++r)
-            if ((A[r][c] < T(0) ? -A[r][c] : A[r][c]) > (A[p][c] < T(0) ? -A[p][c] : A[p][c])) p = r;
-        if (!(A[p][c] != T(0))) return false;
-        std::swap(A[p], A[c]);
-        std::swap(b[p], b[c]);
-        for (std::size_t r = c + 1; r < 6; ++r) {
-            const T f = A[r][c] / A[c][c];
-            for (std::size_t k = c; k < 6; ++k) A[r][k] = A[r][k] - f * A[c][k];
-            b[r] = b[r] - f * b[c];
+struct lu6 {
+    std::array<std::array<T, 6>, 6> a{};  // L below the diagonal (unit diagonal), U on and above
+    std::array<std::size_t, 6> row{0, 1, 2, 3, 4, 5};
+    bool singular = false;
+
+    constexpr explicit lu6(const std::array<std::array<T, 6>, 6>& A) noexcept : a(A) {
+        for (std::size_t c = 0; c < 6; ++c) {
+            std::size_t p = c;
+            for (std::size_t r = c + 1; r < 6; ++r)
+                if ((a[r][c] < T(0) ? -a[r][c] : a[r][c]) > (a[p][c] < T(0) ? -a[p][c] : a[p][c])) p = r;
+            if (!(a[p][c] != T(0))) {
+                singular = true;
+                return;
+            }
+            std::swap(a[p], a[c]);
+            std::swap(row[p], row[c]);
+            for (std::size_t r = c + 1; r < 6; ++r) {
+                a[r][c] = a[r][c] / a[c][c];
+                for (std::size_t k = c + 1; k < 6; ++k) a[r][k] = a[r][k] - a[r][c] * a[c][k];
+            }
         }
     }
-    for (std::size_t c = 6; c-- > 0;) {
-        T x = b[c];
-        for (std::size_t k = c + 1; k < 6; ++k) x = x - A[c][k] * b[k];
-        b[c] = x / A[c][c];
+    // A⁻¹ b
+    [[nodiscard]] constexpr std::array<T, 6> solve(const std::array<T, 6>& b) const noexcept {
+        std::array<T, 6> x{};
+        for (std::size_t i = 0; i < 6; ++i) {
+            T v = b[row[i]];
+            for (std::size_t k = 0; k < i; ++k) v = v - a[i][k] * x[k];
+            x[i] = v;
+        }
+        for (std::size_t i = 6; i-- > 0;) {
+            T v = x[i];
+            for (std::size_t k = i + 1; k < 6; ++k) v = v - a[i][k] * x[k];
+            x[i] = v / a[i][i];
+        }
+        return x;
     }
-    return true;
-}
+};
 // A model that gives ∂a/∂s (6 × 6, row-major): the implicit midpoint's Newton iteration uses it.
 template <class M>
 concept with_acceleration_jacobian =
@@ -173,8 +191,9 @@ enum class implicit_solver {
 
 // s₁ = s₀ + h a(g_m, s_m), s_m = ½(s₀ + s₁), g_m = the pose moved by exp(½ h s_m), and
 // g₁ = the pose moved by exp(h s_m). The implicit equation F(s₁) = s₁ − s₀ − h a(g_m, s_m) = 0
-// is solved from an explicit Euler guess, by default with Newton's method,
-//   s₁ ← s₁ − (1 − ½ h ∂a/∂s(g_m, s_m))⁻¹ F(s₁)
+// is solved from an explicit Euler guess, by default with (simplified) Newton's method,
+//   s₁ ← s₁ − (1 − ½ h ∂a/∂s(g_m, s_m))⁻¹ F(s₁),  the matrix taken at the first midpoint and
+// again only when an update contracts by less than ½
 // (g_m's dependence on s₁ left out of the matrix: it does not enter a free body's body-frame
 // acceleration, and elsewhere it only slows the convergence to linear), or by the fixed-point
 // iteration s₁ ← s₀ + h a(g_m, s_m), which contracts only when h‖∂a/∂s‖ < 2 (for h|ω| below about
@@ -199,20 +218,26 @@ struct implicit_midpoint {
         };
         screw_t s1(x.s + h * model.acceleration(x.g, x.s));
         T previous = std::numeric_limits<T>::infinity();
+        std::optional<integrator_detail::lu6<T>> newton_matrix;  // 1 − ½ h ∂a/∂s, factored
         for (int i = 0; i < max_iterations; ++i) {
             const screw_t s_m(T(1) / T(2) * (x.s + s1));
             const auto g_m = midpoint_pose(s_m, T(1) / T(2));
             screw_t next(x.s + h * model.acceleration(g_m, s_m));  // the fixed-point update
             if constexpr (integrator_detail::with_acceleration_jacobian<M>) {
                 if (solver == implicit_solver::newton) {
-                    // Newton: (1 − ½ h A) Δ = s₀ + h a − s₁ = next − s₁
-                    std::array<std::array<T, 6>, 6> J = model.acceleration_jacobian(g_m, s_m);
-                    std::array<T, 6> delta{};
-                    for (std::size_t r = 0; r < 6; ++r) {
-                        for (std::size_t c = 0; c < 6; ++c) J[r][c] = (r == c ? T(1) : T(0)) - h / T(2) * J[r][c];
-                        delta[r] = next[r] - s1[r];
+                    // Newton: (1 − ½ h A) Δ = s₀ + h a − s₁ = next − s₁, with A = ∂a/∂s taken at the
+                    // first midpoint and factored once (a simplified Newton method: A moves by O(h)
+                    // within the step), and taken again where an update contracts by less than ½
+                    if (!newton_matrix) {
+                        std::array<std::array<T, 6>, 6> J = model.acceleration_jacobian(g_m, s_m);
+                        for (std::size_t r = 0; r < 6; ++r)
+                            for (std::size_t c = 0; c < 6; ++c) J[r][c] = (r == c ? T(1) : T(0)) - h / T(2) * J[r][c];
+                        newton_matrix.emplace(J);
+                        if (newton_matrix->singular) break;
                     }
-                    if (!integrator_detail::solve6(J, delta)) break;
+                    std::array<T, 6> residual{};
+                    for (std::size_t r = 0; r < 6; ++r) residual[r] = next[r] - s1[r];
+                    const std::array<T, 6> delta = newton_matrix->solve(residual);
                     for (std::size_t r = 0; r < 6; ++r) next[r] = s1[r] + delta[r];
                 }
             }
@@ -227,6 +252,8 @@ struct implicit_midpoint {
                 if (renormalize) y.g = model.renormalize(y.g);
                 return {y, error_code::none};
             }
+            // a slow contraction: the matrix of the first midpoint no longer fits; take it anew
+            if (change > previous / T(2)) newton_matrix.reset();
             previous = change;
         }
         if (iterations) *iterations += max_iterations;

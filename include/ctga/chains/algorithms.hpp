@@ -120,8 +120,9 @@ constexpr std::size_t depth_of(std::size_t i) {
 
 // The forward pass of §4.1/§5.3 into k: maps, world poses (when Poses), velocities and
 // accelerations (as asked), then then(body, k) while the body's numbers are at hand (RNEA's
-// forces). RNEA and ABA need no world poses: only each body's map in its parent. Every number
-// asked for is written before it is read, so k may start uninitialized.
+// forces; the body's map k.X[i] is stored only after it). RNEA and ABA need no world poses:
+// only each body's map in its parent. Every number asked for is written before it is read, so
+// k may start uninitialized.
 struct no_body_work {
     template <class B, class K>
     constexpr void operator()(B, const K&) const noexcept {}

@@ -137,9 +137,12 @@ public:
     // The components of target layout TL (blades of the expression outside TL are not computed).
     template <class U, auto TL>
     [[nodiscard]] CTGA_ALWAYS_INLINE constexpr std::array<U, TL.size()> evaluate() const noexcept {
-        const std::array<const U*, leaf_count> pointers =
-            boost::hana::unpack(leaves, [](const auto&... l) { return std::array<const U*, leaf_count>{l.data()...}; });
-        return expr::compute<U, Node, TL>(pointers.data());
+        return expr::compute<U, Node, TL>(leaf_data<U>().data());
+    }
+    // Where each leaf's components are (the leaves of programs over this expression's leaves).
+    template <class U>
+    [[nodiscard]] CTGA_ALWAYS_INLINE constexpr std::array<const U*, leaf_count> leaf_data() const noexcept {
+        return boost::hana::unpack(leaves, [](const auto&... l) { return std::array<const U*, leaf_count>{l.data()...}; });
     }
 
     // The coefficient of a blade named as written; only that component is computed.

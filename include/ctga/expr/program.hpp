@@ -113,6 +113,30 @@ struct hash_list<type_list<Ls...>> {
 template <class Node>
 struct looped_price;
 
+// What a program's assignments cost (assignment x is terms[offsets[x], offsets[x + 1])):
+// additions per assignment; multiplications counting each distinct monomial prefix once (the
+// same leaf product is computed once), plus coefficients other than ±1.
+constexpr cost assignments_price(const op_term* terms, const std::uint32_t* offsets, std::size_t assignments) {
+    cost c;
+    std::size_t capacity = 1;
+    for (std::size_t x = 0; x < assignments; ++x)
+        for (std::uint32_t t = offsets[x]; t < offsets[x + 1]; ++t) capacity += terms[t].degree;
+    std::uint64_t* prefixes = new std::uint64_t[capacity];
+    std::size_t count = 0;
+    for (std::size_t x = 0; x < assignments; ++x)
+        for (std::uint32_t t = offsets[x]; t < offsets[x + 1]; ++t) {
+            const op_term& o = terms[t];
+            if (t > offsets[x]) ++c.add;
+            if (o.degree >= 1 && !is_unit(o.c)) ++c.mul;
+            std::uint64_t h = o.degree > 0 ? mix(0x7f, o.f[0]) : 0;
+            for (std::uint32_t len = 2; len <= o.degree; ++len) prefixes[count++] = h = mix(h, o.f[len - 1]);
+        }
+    detail::merge_sort(prefixes, count, [](std::uint64_t a, std::uint64_t b) { return a < b; });
+    for (std::size_t i = 0; i < count; ++i) c.mul += i == 0 || prefixes[i] != prefixes[i - 1];
+    delete[] prefixes;
+    return c;
+}
+
 // Assemble the program computing target layout TL from root node Root. The looped products
 // in it (looped.hpp) are computed before it runs and read as further leaves, numbered from
 // leaf_base on.
@@ -265,26 +289,7 @@ struct program {
     // What the program costs (computed only when asked for, by cost_of), the looped products it
     // reads included.
     static constexpr cost price = [] {
-        cost c = looped_prices(looped_list{});
-        // 4. the price: additions per assignment; multiplications counting each distinct
-        //    monomial prefix once (the same leaf product is computed once), plus coefficients
-        std::size_t capacity = 1;
-        for (std::size_t x = 0; x < assignment_count; ++x)
-            for (std::uint32_t t = offsets[x]; t < offsets[x + 1]; ++t) capacity += terms[t].degree;
-        std::uint64_t* prefixes = new std::uint64_t[capacity];
-        std::size_t count = 0;
-        for (std::size_t x = 0; x < assignment_count; ++x)
-            for (std::uint32_t t = offsets[x]; t < offsets[x + 1]; ++t) {
-                const op_term& o = terms[t];
-                if (t > offsets[x]) ++c.add;
-                if (o.degree >= 1 && !is_unit(o.c)) ++c.mul;
-                std::uint64_t h = o.degree > 0 ? mix(0x7f, o.f[0]) : 0;
-                for (std::uint32_t len = 2; len <= o.degree; ++len) prefixes[count++] = h = mix(h, o.f[len - 1]);
-            }
-        detail::merge_sort(prefixes, count, [](std::uint64_t a, std::uint64_t b) { return a < b; });
-        for (std::size_t i = 0; i < count; ++i) c.mul += i == 0 || prefixes[i] != prefixes[i - 1];
-        delete[] prefixes;
-        return c;
+        return looped_prices(looped_list{}) + assignments_price(terms.data(), offsets.data(), assignment_count);
     }();
 };
 

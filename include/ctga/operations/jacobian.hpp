@@ -32,6 +32,8 @@
 #include <utility>
 
 #include "ctga/expr/derivative.hpp"
+#include "ctga/expr/differentiate.hpp"
+#include "ctga/expr/run.hpp"
 #include "ctga/operations/formula.hpp"
 #include "ctga/support/inline.hpp"
 
@@ -114,6 +116,13 @@ struct argument_columns {
             for (std::size_t j = 0; j < sizes[p]; ++j) out[c++] = {first + p, j};
         return out;
     }();
+    // the same as factors of a program (program.hpp: leaf << leaf_shift | component)
+    static constexpr std::array<std::uint32_t, count> factors = [] {
+        std::array<std::uint32_t, count> out{};
+        for (std::size_t c = 0; c < count; ++c)
+            out[c] = static_cast<std::uint32_t>(columns[c].leaf << expr::leaf_shift | columns[c].comp);
+        return out;
+    }();
 };
 
 // The rows of RowLayout that column node D can make non-zero, as a layout in RowLayout's order
@@ -163,34 +172,6 @@ constexpr std::size_t fill_column(Pattern& p, std::size_t k, std::size_t c) {
     return k;
 }
 
-template <class Node, auto RowLayout, class Columns, class Cs = std::make_index_sequence<Columns::count>>
-struct assembled;
-template <class Node, auto RowLayout, class Columns, std::size_t... C>
-struct assembled<Node, RowLayout, Columns, std::index_sequence<C...>> {
-    static constexpr std::size_t cols = Columns::count;
-    static constexpr std::size_t non_zeros = (column_t<Node, RowLayout, Columns, C>::count + ... + 0);
-    static constexpr auto pattern = [] {
-        jacobian_pattern<RowLayout.size(), cols, non_zeros> p;
-        std::size_t k = 0;
-        ((k = fill_column<column_t<Node, RowLayout, Columns, C>>(p, k, C)), ...);
-        p.col_begin[cols] = static_cast<std::uint32_t>(k);
-        return p;
-    }();
-    static constexpr expr::cost price = (column_t<Node, RowLayout, Columns, C>::price + ... + expr::cost{});
-};
-
-// The rows: Target's layout, or the value's canonical one.
-template <class E, class Target>
-constexpr auto row_layout_of() {
-    if constexpr (std::is_void_v<Target>) {
-        return E::layout;
-    } else {
-        static_assert(detail::first_missing<E::layout, Target::layout>() < 0,
-                      "ctga::jacobian: the Target type lacks a blade the formula's value can make non-zero");
-        return Target::layout;
-    }
-}
-
 // Column C evaluated into its entries of J.
 template <std::size_t C, class Columns, auto RowLayout, class J, class E>
 CTGA_ALWAYS_INLINE constexpr void evaluate_column(J& out, const E& e) noexcept {
@@ -203,10 +184,84 @@ CTGA_ALWAYS_INLINE constexpr void evaluate_column(J& out, const E& e) noexcept {
         for (std::size_t r = 0; r < col::count; ++r) out.values[J::pattern.col_begin[C] + r] = v[r];
     }
 }
-template <class Columns, auto RowLayout, class J, class E, std::size_t... C>
-CTGA_ALWAYS_INLINE constexpr void evaluate_columns(J& out, const E& e, std::index_sequence<C...>) noexcept {
-    (evaluate_column<C, Columns, RowLayout>(out, e), ...);
+
+// A Jacobian from one column program per column (the value has looped products).
+template <class Node, auto RowLayout, class Columns, class Cs = std::make_index_sequence<Columns::count>>
+struct by_columns;
+template <class Node, auto RowLayout, class Columns, std::size_t... C>
+struct by_columns<Node, RowLayout, Columns, std::index_sequence<C...>> {
+    static constexpr std::size_t cols = Columns::count;
+    static constexpr std::size_t non_zeros = (column_t<Node, RowLayout, Columns, C>::count + ... + 0);
+    static constexpr auto pattern = [] {
+        jacobian_pattern<RowLayout.size(), cols, non_zeros> p;
+        std::size_t k = 0;
+        ((k = fill_column<column_t<Node, RowLayout, Columns, C>>(p, k, C)), ...);
+        p.col_begin[cols] = static_cast<std::uint32_t>(k);
+        return p;
+    }();
+    static constexpr expr::cost price = (column_t<Node, RowLayout, Columns, C>::price + ... + expr::cost{});
+
+    template <class J, class E>
+    CTGA_ALWAYS_INLINE static constexpr void evaluate(J& out, const E& e) noexcept {
+        (evaluate_column<C, Columns, RowLayout>(out, e), ...);
+    }
+};
+
+// A Jacobian from the value's program differentiated (expr/differentiate.hpp): one program for
+// all columns, sharing the value's temporaries.
+template <class Program, class Columns>
+struct by_program {
+    using D = expr::program_jacobian<Program, Columns::factors>;
+    static constexpr std::size_t non_zeros = D::non_zeros;
+    static constexpr auto pattern = [] {
+        jacobian_pattern<D::rows, Columns::count, non_zeros> p;
+        for (std::size_t c = 0; c < Columns::count; ++c) {
+            p.col_begin[c] = D::draft.column_begin[c];
+            for (std::size_t k = D::draft.column_begin[c]; k < D::draft.column_begin[c + 1]; ++k) {
+                p.row[k] = D::draft.row[k];
+                p.col[k] = static_cast<std::uint16_t>(c);
+            }
+        }
+        p.col_begin[Columns::count] = static_cast<std::uint32_t>(non_zeros);
+        return p;
+    }();
+    static constexpr expr::cost price = D::price;
+
+    template <class J, class E>
+    CTGA_ALWAYS_INLINE static constexpr void evaluate(J& out, const E& e) noexcept {
+        if constexpr (non_zeros > 0)
+            out.values = expr::run<typename E::scalar_type, D, non_zeros>(e.template leaf_data<typename E::scalar_type>().data());
+    }
+};
+
+// Differentiate the program where it has no looped products, column by column where it has.
+template <class Node, auto RowLayout, class Columns>
+constexpr auto choose_method() {
+    using P = expr::program<Node, RowLayout>;
+    if constexpr (P::looped_count == 0) return by_program<P, Columns>{};
+    else return by_columns<Node, RowLayout, Columns>{};
 }
+template <class Node, auto RowLayout, class Columns>
+using method_t = decltype(choose_method<Node, RowLayout, Columns>());
+
+// The rows: Target's layout, or the value's canonical one.
+template <class E, class Target>
+constexpr auto row_layout_of() {
+    if constexpr (std::is_void_v<Target>) {
+        return E::layout;
+    } else {
+        // the staged normal form's blades include the value's: where Target holds them all, the
+        // value's own layout (a full expansion) is not needed
+        using N = typename E::node_type;
+        constexpr auto& staged = expr::traits<N>::terms;
+        constexpr auto staged_layout = expr::output_layout<expr::distinct_outputs(staged)>(staged);
+        if constexpr (detail::first_missing<staged_layout, Target::layout>() >= 0)
+            static_assert(detail::first_missing<E::layout, Target::layout>() < 0,
+                          "ctga::jacobian: the Target type lacks a blade the formula's value can make non-zero");
+        return Target::layout;
+    }
+}
+
 
 }  // namespace jacobian_detail
 
@@ -240,9 +295,9 @@ template <std::size_t K, class Target = void, class F, formula_argument... Args>
     using E = std::remove_cvref_t<decltype(e)>;
     constexpr auto rows = jacobian_detail::row_layout_of<E, Target>();
     using columns = jacobian_detail::argument_columns<K, Args...>;
-    using all = jacobian_detail::assembled<typename E::node_type, rows, columns>;
-    sparse_jacobian<typename E::scalar_type, all::pattern, all::price> J;
-    jacobian_detail::evaluate_columns<columns, rows>(J, e, std::make_index_sequence<columns::count>{});
+    using method = jacobian_detail::method_t<typename E::node_type, rows, columns>;
+    sparse_jacobian<typename E::scalar_type, method::pattern, method::price> J;
+    method::evaluate(J, e);
     return J;
 }
 

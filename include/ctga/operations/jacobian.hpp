@@ -1,11 +1,13 @@
 // Exact Jacobians of formulas, at compile time.
 //
 // A formula's value is a polynomial in its arguments' components (every node of the engine is
-// one, expr/derivative.hpp), so its derivative with respect to one component of one argument
-// is again an expression over the same leaves: expr::derive_t. ctga::jacobian builds one such
-// expression per component of the chosen argument (a column), lets the engine find each
-// column's structurally non-zero rows (the blades its normal form can make non-zero) and
-// evaluates every column as straight-line code:
+// one, expr/derivative.hpp), and the engine evaluates it as a straight-line program of sums of
+// monomials. ctga::jacobian differentiates that program by the chain rule along its assignments
+// (expr/differentiate.hpp): one program computes every column (one per component of the chosen
+// argument), the value's temporaries shared by all, and an entry whose derivative has no terms is
+// a structural zero. Where the value loops a product (expr/looped.hpp), whose result the program
+// reads as a leaf, each column is instead the differentiated expression tree (expr::derive_t),
+// with its own program and its rows from its own normal form:
 //
 //   auto J = ctga::jacobian<1>(ctga::momentum.formula, N, s);       // ∂P/∂s: 6 × 6, N's pattern
 //   double x = J(r, c);                                              // ∂ out[r] / ∂ s[c]

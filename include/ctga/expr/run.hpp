@@ -79,42 +79,56 @@ CTGA_ALWAYS_INLINE constexpr T term_magnitude(const op_term& o, const T* const* 
 // subtracted with its signs flipped, so no other negation is ever needed. A sum starts from a
 // term, not from zero: x + 0.0 is not x for x = −0.0, so a zero start would cost an addition
 // the compiler may not remove.
+//
+// Each step is a template instance, and an instance costs compile time (about a millisecond
+// with g++ 12 at -O2), so a step does as much as one statement can: a half of a tree that is one
+// term is computed by the combine that reads it, and the step at the root of an assignment's
+// tree writes the assignment itself (store). An assignment of n ≥ 2 terms is n − 1 steps, one
+// term is one. The arithmetic is the same either way.
 enum class step_kind : std::uint8_t {
-    term,     // r[reg] = ±|term|
-    combine,  // r[reg] = r[reg] ± r[other]
-    store,    // assignment `target` = r[reg] (zero when the assignment has no terms)
+    term,     // value = ±|term reg|
+    combine,  // value = left ± right: left ±|term reg| or r[reg], right |term other| or r[other]
+    empty,    // value = 0 (an assignment with no terms; always stored)
 };
 struct step {
     step_kind kind{};
-    bool subtract = false;   // term: negate; combine: subtract
-    std::uint32_t reg = 0;
-    std::uint32_t other = 0;  // term: its index in P::terms; combine: the right operand's register; store: the assignment
-    bool empty = false;      // store: the assignment has no terms
+    bool subtract = false;     // term: negate; combine: subtract the right operand
+    bool left_term = false;    // combine: the left operand is term `reg` (negated when left_negate)
+    bool left_negate = false;
+    bool right_term = false;   // combine: the right operand is +|term other|
+    bool store = false;        // the value is assignment `target`; else it goes to r[reg]
+    std::uint32_t reg = 0;     // a term's index in P::terms, and the register of its tree's value
+    std::uint32_t other = 0;   // combine: the right operand's term (or its register, the same index)
+    std::uint32_t target = 0;  // store: the assignment
 };
 
 template <class P>
 struct straight_line {
-    static constexpr std::size_t run_stepount = P::terms.size() > 0 ? 2 * P::terms.size() + P::assignment_count : P::assignment_count;
+    static constexpr std::size_t step_capacity = P::terms.size() + P::assignment_count;
     static constexpr std::size_t register_count = P::terms.size() > 0 ? P::terms.size() : 1;
 
     struct plan {
-        std::array<step, (run_stepount > 0 ? run_stepount : 1)> steps{};
+        std::array<step, (step_capacity > 0 ? step_capacity : 1)> steps{};
         std::size_t count = 0;
     };
-    // The tree over terms [b, e) of the assignment whose terms start at `begin`: its value ends
-    // in the register of its first term (each term has its own register: its index).
+    // The tree over terms [b, e) (e − b ≥ 2) of the assignment whose terms start at `begin`: its
+    // value ends in the register of its first term (each term has its own register: its index).
+    // A one-term half is computed inline by the combine that reads it: the left one as ±|term|,
+    // the right one as +|term| (its sign is in `subtract`).
     static constexpr void sum(plan& p, std::uint32_t begin, std::uint32_t n, std::uint32_t rotation, std::uint32_t b,
                               std::uint32_t e, bool negate) {
         auto at = [&](std::uint32_t i) { return begin + (i + rotation) % n; };
-        if (e - b == 1) {
-            p.steps[p.count++] = step{step_kind::term, (P::terms[at(b)].c.num < 0) != negate, at(b), at(b), false};
-            return;
-        }
         const std::uint32_t m = b + (e - b) / 2;
         const bool subtract = (P::terms[at(m)].c.num < 0) != negate;
-        sum(p, begin, n, rotation, b, m, negate);
-        sum(p, begin, n, rotation, m, e, subtract ? !negate : negate);
-        p.steps[p.count++] = step{step_kind::combine, subtract, at(b), at(m), false};
+        step c{step_kind::combine, subtract};
+        c.left_term = m - b == 1;
+        c.left_negate = (P::terms[at(b)].c.num < 0) != negate;
+        c.right_term = e - m == 1;
+        c.reg = at(b);
+        c.other = at(m);
+        if (!c.left_term) sum(p, begin, n, rotation, b, m, negate);
+        if (!c.right_term) sum(p, begin, n, rotation, m, e, subtract ? !negate : negate);
+        p.steps[p.count++] = c;
     }
     static constexpr plan steps_of = [] {
         plan p;
@@ -123,8 +137,17 @@ struct straight_line {
             std::uint32_t rotation = 0;
             while (rotation < n && P::terms[begin + rotation].c.num <= 0) ++rotation;
             if (rotation == n) rotation = 0;
-            if (n > 0) sum(p, begin, n, rotation, 0, n, false);
-            p.steps[p.count++] = step{step_kind::store, false, n > 0 ? begin + rotation : 0, a, n == 0};
+            if (n >= 2) {
+                sum(p, begin, n, rotation, 0, n, false);
+            } else {
+                step t{n == 1 ? step_kind::term : step_kind::empty};
+                t.subtract = n == 1 && P::terms[begin].c.num < 0;
+                t.reg = begin;
+                p.steps[p.count++] = t;
+            }
+            // the last step is the tree's root
+            p.steps[p.count - 1].store = true;
+            p.steps[p.count - 1].target = a;
         }
         return p;
     }();
@@ -150,16 +173,25 @@ CTGA_ALWAYS_INLINE constexpr T term_at(const T* const* leaves, const T* tmp, std
 template <class T, class P, std::size_t N, std::size_t K>
 CTGA_ALWAYS_INLINE constexpr void run_step(T* r, T* tmp, std::array<T, N>& out, const T* const* leaves) noexcept {
     constexpr step s = straight_line<P>::steps_of.steps[K];
+    T v{};
     if constexpr (s.kind == step_kind::term) {
-        const T v = term_at<T, P, s.other>(leaves, tmp, std::make_index_sequence<P::terms[s.other].degree>{});
-        if constexpr (s.subtract) r[s.reg] = -v; else r[s.reg] = v;
+        const T x = term_at<T, P, s.reg>(leaves, tmp, std::make_index_sequence<P::terms[s.reg].degree>{});
+        if constexpr (s.subtract) v = -x; else v = x;
     } else if constexpr (s.kind == step_kind::combine) {
-        if constexpr (s.subtract) r[s.reg] = r[s.reg] - r[s.other]; else r[s.reg] = r[s.reg] + r[s.other];
-    } else {
-        T v{};
-        if constexpr (!s.empty) v = r[s.reg];
-        if constexpr (s.other < P::tmp_count) tmp[s.other] = v; else out[s.other - P::tmp_count] = v;
+        T left{}, right{};
+        if constexpr (s.left_term) {
+            const T x = term_at<T, P, s.reg>(leaves, tmp, std::make_index_sequence<P::terms[s.reg].degree>{});
+            if constexpr (s.left_negate) left = -x; else left = x;
+        } else {
+            left = r[s.reg];
+        }
+        if constexpr (s.right_term) right = term_at<T, P, s.other>(leaves, tmp, std::make_index_sequence<P::terms[s.other].degree>{});
+        else right = r[s.other];
+        if constexpr (s.subtract) v = left - right; else v = left + right;
     }
+    if constexpr (!s.store) r[s.reg] = v;
+    else if constexpr (s.target < P::tmp_count) tmp[s.target] = v;
+    else out[s.target - P::tmp_count] = v;
 }
 template <class T, class P, std::size_t N, std::size_t... K>
 CTGA_ALWAYS_INLINE constexpr std::array<T, N> run_steps([[maybe_unused]] const T* const* leaves, std::index_sequence<K...>) noexcept {

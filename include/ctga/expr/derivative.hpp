@@ -15,6 +15,15 @@
 // result is an ordinary node: its normal form, the structural zeros of its value (node_layout),
 // its staging and its straight-line program are the engine's, exactly as for the expression it
 // came from. ctga::jacobian (operations/jacobian.hpp) evaluates one such node per column.
+//
+// One rewriting makes the columns share work. For an associative product (geometric, exterior)
+// whose left factor is itself a product x = a ∘ b with b free of the variable,
+//   ∂(a ∘ b) ∘ y = (∂a ∘ b) ∘ y = ∂a ∘ (b ∘ y),
+// and b ∘ y is then the same node in every column: ctga::jacobian computes it once (run.hpp,
+// shared units) and each column multiplies only the sparse ∂a into it. The mirror image holds on
+// the right: x ∘ ∂(a ∘ b) = (x ∘ a) ∘ ∂b when a is free of the variable. For (g ḡ) N (g ḡ)*,
+// ∂[(G N) G*] = ∂G (N G*) + (G N) ∂G*: two products of the 15-blade ∂G per column, where
+// (∂G N) G* multiplied a 64-blade ∂G N by the 64 blades of G*.
 #pragma once
 
 #include <array>
@@ -22,6 +31,8 @@
 #include <type_traits>
 
 #include "ctga/algebra/layout.hpp"
+#include "ctga/algebra/rules.hpp"
+#include "ctga/expr/looped.hpp"
 #include "ctga/expr/nodes.hpp"
 #include "ctga/expr/rational.hpp"
 
@@ -63,9 +74,25 @@ struct add<zero_node, zero_node, S> {
 template <class X, class Y, int S>
 using add_t = typename add<X, Y, S>::type;
 
-// The product node P<R, X, Y> (product or looped), zero when a factor is.
+// Whether a node is a constant: a constant, or linear images and sums of constants (the
+// derivative of a leaf, lifted or barred).
+template <class N>
+inline constexpr bool constant_node = false;
+template <auto L, auto C>
+inline constexpr bool constant_node<constant<L, C>> = true;
+template <class R, class X>
+inline constexpr bool constant_node<map<R, X>> = constant_node<X>;
+template <rational Q, class X>
+inline constexpr bool constant_node<scaled<Q, X>> = constant_node<X>;
+template <class X, class Y, int S>
+inline constexpr bool constant_node<sum<X, Y, S>> = constant_node<X> && constant_node<Y>;
+
+// The product node P<R, X, Y> (product or looped), zero when a factor is. A product with a
+// constant factor (a leaf's derivative: one blade, or a few) stays symbolic whatever P is: its
+// terms are signed copies of the other factor's components, with no multiplication to loop over.
 template <template <class, class, class> class P, class R, class X, class Y>
-using times_t = std::conditional_t<is_zero_node<X> || is_zero_node<Y>, zero_node, P<R, X, Y>>;
+using times_t = std::conditional_t<is_zero_node<X> || is_zero_node<Y>, zero_node,
+                                   std::conditional_t<constant_node<X> || constant_node<Y>, product<R, X, Y>, P<R, X, Y>>>;
 
 }  // namespace derivative_detail
 
@@ -94,15 +121,154 @@ struct derive<arg<I, L>, Leaf, Comp> {
     static_assert(I != I, "ctga::derivative: differentiate a bound formula (its arguments are leaves), not a formula's body");
     using type = zero_node;
 };
+namespace derivative_detail {
+
+// (x ∘ y) ∘ z = x ∘ (y ∘ z) for every blade triple: the geometric and exterior products.
+template <class Rule>
+inline constexpr bool associative = false;
+template <class Alg>
+inline constexpr bool associative<rules::geometric<Alg>> = true;
+template <class Alg>
+inline constexpr bool associative<rules::exterior<Alg>> = true;
+
+// A product that every column reads unchanged: looped (computed once, shared by the columns) past
+// the size at which a program stops being unrolled anyway (run.hpp, inline_terms), else left to
+// the symbolic engine inside each column.
+template <class R, class X, class Y>
+using shared_product_t =
+    std::conditional_t<(surviving_pairs<R, operand_layout<X>, operand_layout<Y>>(64) > 64), looped<R, X, Y>, product<R, X, Y>>;
+
+// How a linear blade rule M meets the product R: M(a ∘ b) = M(a) ∘ M(b) (an automorphism) or
+// M(b) ∘ M(a) (an anti-automorphism). Reversion and Clifford conjugation reverse the geometric
+// and exterior products, the grade involution keeps them, and so does a permutation of the
+// generators that keeps their squares (the paper's bar, §5).
+enum class morphism { none, automorphism, anti };
+template <class M, class R>
+inline constexpr morphism morphism_of = morphism::none;
+template <class Alg, template <class> class R>
+    requires(associative<R<Alg>>)
+inline constexpr morphism morphism_of<rules::reverse<Alg>, R<Alg>> = morphism::anti;
+template <class Alg, template <class> class R>
+    requires(associative<R<Alg>>)
+inline constexpr morphism morphism_of<rules::conjugate<Alg>, R<Alg>> = morphism::anti;
+template <class Alg, template <class> class R>
+    requires(associative<R<Alg>>)
+inline constexpr morphism morphism_of<rules::involute<Alg>, R<Alg>> = morphism::automorphism;
+template <class Alg, std::array<int, Alg::dimension> Perm, template <class> class R>
+    requires(associative<R<Alg>>)
+inline constexpr morphism morphism_of<rules::permutation<Alg, Perm>, R<Alg>> = [] {
+    for (std::size_t i = 0; i < Alg::dimension; ++i) {
+        const blade_mask from = blade_mask{1} << i, to = blade_mask{1} << Perm[i];
+        if (((Alg::null_mask & from) != 0) != ((Alg::null_mask & to) != 0) ||
+            ((Alg::negative_mask & from) != 0) != ((Alg::negative_mask & to) != 0))
+            return morphism::none;
+    }
+    return morphism::automorphism;
+}();
+
+// The two factors of X as a product of rule R, if it is one: a product or looped node, or the
+// image of one under a linear rule that is a morphism of R (conj(a ∘ b) = conj(b) ∘ conj(a)).
+// `node` builds a product of two factors of the same kind.
+template <class R, class X>
+struct factors_of {
+    static constexpr bool is = false;
+};
+template <class R, class A, class B>
+struct factors_of<R, product<R, A, B>> {
+    static constexpr bool is = true;
+    using left = A;
+    using right = B;
+    template <class R2, class L, class Q>
+    using node = product<R2, L, Q>;
+};
+template <class R, class A, class B>
+struct factors_of<R, looped<R, A, B>> {
+    static constexpr bool is = true;
+    using left = A;
+    using right = B;
+    template <class R2, class L, class Q>
+    using node = looped<R2, L, Q>;
+};
+template <class R, class M, class X>
+    requires(factors_of<R, X>::is && morphism_of<M, R> != morphism::none)
+struct factors_of<R, map<M, X>> {
+    static constexpr bool is = true;
+    static constexpr bool anti = morphism_of<M, R> == morphism::anti;
+    using left = map<M, std::conditional_t<anti, typename factors_of<R, X>::right, typename factors_of<R, X>::left>>;
+    using right = map<M, std::conditional_t<anti, typename factors_of<R, X>::left, typename factors_of<R, X>::right>>;
+    template <class R2, class L, class Q>
+    using node = typename factors_of<R, X>::template node<R2, L, Q>;
+};
+
+template <class X, std::size_t Leaf, std::size_t Comp>
+inline constexpr bool constant_in = is_zero_node<derive_t<X, Leaf, Comp>>;
+
+template <template <class, class, class> class P, class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
+constexpr auto left_times();
+template <template <class, class, class> class P, class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
+constexpr auto right_times();
+// ∂a ∘ (b ∘ y), b ∘ y shared (not formed when a is constant)
+template <template <class, class, class> class P, class R, class A, class B, class Y, std::size_t Leaf, std::size_t Comp>
+constexpr auto left_times_shared() {
+    if constexpr (constant_in<A, Leaf, Comp>) return zero_node{};
+    else return left_times<P, R, A, shared_product_t<R, B, Y>, Leaf, Comp>();
+}
+// (x ∘ a) ∘ ∂b, x ∘ a shared (not formed when b is constant)
+template <template <class, class, class> class P, class R, class X, class A, class B, std::size_t Leaf, std::size_t Comp>
+constexpr auto right_times_shared() {
+    if constexpr (constant_in<B, Leaf, Comp>) return zero_node{};
+    else return right_times<P, R, shared_product_t<R, X, A>, B, Leaf, Comp>();
+}
+
+// ∂x ∘ y as the product node P of rule R. Where x = a ∘ b (R associative),
+//   ∂(a ∘ b) ∘ y = ∂a ∘ (b ∘ y) + (a ∘ ∂b) ∘ y,
+// b ∘ y the same node in every column; recursively into a.
+template <template <class, class, class> class P, class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
+constexpr auto left_times() {
+    using F = factors_of<R, X>;
+    if constexpr (constant_in<X, Leaf, Comp>) {
+        return zero_node{};
+    } else if constexpr (associative<R> && F::is) {
+        using A = typename F::left;
+        using B = typename F::right;
+        using first = decltype(left_times_shared<P, R, A, B, Y, Leaf, Comp>());
+        using second = times_t<P, R, decltype(right_times<F::template node, R, A, B, Leaf, Comp>()), Y>;
+        return add_t<first, second, 1>{};
+    } else {
+        return times_t<P, R, derive_t<X, Leaf, Comp>, Y>{};
+    }
+}
+// x ∘ ∂y, the mirror image: where y = a ∘ b,
+//   x ∘ ∂(a ∘ b) = x ∘ (∂a ∘ b) + (x ∘ a) ∘ ∂b,
+// x ∘ a the same node in every column; recursively into b.
+template <template <class, class, class> class P, class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
+constexpr auto right_times() {
+    using F = factors_of<R, Y>;
+    if constexpr (constant_in<Y, Leaf, Comp>) {
+        return zero_node{};
+    } else if constexpr (associative<R> && F::is) {
+        using A = typename F::left;
+        using B = typename F::right;
+        using first = times_t<P, R, X, decltype(left_times<F::template node, R, A, B, Leaf, Comp>())>;
+        using second = decltype(right_times_shared<P, R, X, A, B, Leaf, Comp>());
+        return add_t<first, second, 1>{};
+    } else {
+        return times_t<P, R, X, derive_t<Y, Leaf, Comp>>{};
+    }
+}
+
+template <template <class, class, class> class P, class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
+using leibniz_t = add_t<decltype(left_times<P, R, X, Y, Leaf, Comp>()), decltype(right_times<P, R, X, Y, Leaf, Comp>()), 1>;
+
+}  // namespace derivative_detail
+
 template <class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
 struct derive<product<R, X, Y>, Leaf, Comp> {
-    using type = derivative_detail::add_t<derivative_detail::times_t<product, R, derive_t<X, Leaf, Comp>, Y>,
-                                          derivative_detail::times_t<product, R, X, derive_t<Y, Leaf, Comp>>, 1>;
+    using type = derivative_detail::leibniz_t<product, R, X, Y, Leaf, Comp>;
 };
 template <class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
 struct derive<looped<R, X, Y>, Leaf, Comp> {
-    using type = derivative_detail::add_t<derivative_detail::times_t<looped, R, derive_t<X, Leaf, Comp>, Y>,
-                                          derivative_detail::times_t<looped, R, X, derive_t<Y, Leaf, Comp>>, 1>;
+    using type = derivative_detail::leibniz_t<looped, R, X, Y, Leaf, Comp>;
 };
 template <class R, class X, std::size_t Leaf, std::size_t Comp>
 struct derive<map<R, X>, Leaf, Comp> {

@@ -275,21 +275,34 @@ inline constexpr bool identity_layout = [] {
     return true;
 }();
 
-// x ∘ y into output layout OL (any blades, in any orientation: a target type's).
-template <class T, class Rows, auto LY, auto OL>
-constexpr std::array<T, OL.size()> run_rows(const T* x, const T* y) noexcept {
-    std::array<T, Rows::universe> acc{};
+// acc ± x ∘ y, acc indexed by output blade mask (Negate: subtract the product).
+template <class T, class Rows, auto LY, bool Negate = false>
+constexpr void run_rows_into(T* acc, const T* x, const T* y) noexcept {
     constexpr std::size_t W = Rows::column_words;
     const auto& d = Rows::value;
     for (std::size_t r = 0; r < Rows::rows; ++r) {
         constexpr bool identity = identity_layout<LY>;  // column j is blade j: no lookup
-        run_set<T, W, false, identity>(d.add.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc.data());
-        run_set<T, W, true, identity>(d.subtract.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc.data());
+        run_set<T, W, Negate, identity>(d.add.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc);
+        run_set<T, W, !Negate, identity>(d.subtract.data() + r * W, d.lead[r], LY.masks.data(), x[r], y, acc);
     }
+}
+
+// The components of output layout OL (any blades, in any orientation: a target type's) from an
+// accumulator over the Universe's blades.
+template <class T, std::size_t Universe, auto OL>
+constexpr std::array<T, OL.size()> gather(const T* acc) noexcept {
     std::array<T, OL.size()> out{};
     for (std::size_t k = 0; k < OL.size(); ++k)
-        if (OL.masks[k] < Rows::universe) out[k] = OL.signs[k] > 0 ? acc[OL.masks[k]] : T(-acc[OL.masks[k]]);
+        if (OL.masks[k] < Universe) out[k] = OL.signs[k] > 0 ? acc[OL.masks[k]] : T(-acc[OL.masks[k]]);
     return out;
+}
+
+// x ∘ y into output layout OL.
+template <class T, class Rows, auto LY, auto OL>
+constexpr std::array<T, OL.size()> run_rows(const T* x, const T* y) noexcept {
+    std::array<T, Rows::universe> acc{};
+    run_rows_into<T, Rows, LY>(acc.data(), x, y);
+    return gather<T, Rows::universe, OL>(acc.data());
 }
 
 // ---- factorised over generators: a block product ---------------------------------------------
@@ -412,7 +425,10 @@ struct block_kernel {
     template <class Visit>
     static constexpr void each_pair(Visit visit) { each_pair_in(XP, YP, visit); }
     template <class Visit>
-    static constexpr void each_pair_of_all(Visit visit) { each_pair_in(low_mask, low_mask, visit); }
+    static constexpr void each_pair_of_all(Visit visit) {
+        constexpr std::uint32_t all = static_cast<std::uint32_t>((std::uint64_t{1} << block) - 1);  // every low blade
+        each_pair_in(all, all, visit);
+    }
     static constexpr std::size_t size = [] {
         std::size_t n = 0;
         each_pair([&](kernel_term) { ++n; });
@@ -618,41 +634,137 @@ CTGA_ALWAYS_INLINE constexpr void run_block_pairs(const T* xs, const T* ys, T* a
     }
 }
 
-// x ∘ y into output layout OL by blocks: scatter (each copy of x signed by its χ, of y twisted
-// by its ψ, with the stored orientations), every kernel over its block pairs, gather.
-template <class T, class Plan, auto LX, auto LY, auto OL>
-constexpr std::array<T, OL.size()> run_blocks(const T* x, const T* y) noexcept {
+// acc ± x ∘ y by blocks: scatter (each copy of x signed by its χ, of y twisted by its ψ, with
+// the stored orientations, x negated for Negate), then every kernel over its block pairs.
+template <class T, class Plan, auto LX, auto LY, bool Negate = false>
+constexpr void run_blocks_into(T* acc, const T* x, const T* y) noexcept {
     constexpr std::size_t U = Plan::universe;
     constexpr auto& c = Plan::census;
     constexpr blade_mask low_mask = Plan::split::low_mask;
-    std::array<T, c.chi.count * U> xs{};
-    std::array<T, c.psi.count * U> ys{};
+    // only the blocks an operand fills are read (whole): only they are cleared
+    std::array<T, c.chi.count * U> xs;
+    std::array<T, c.psi.count * U> ys;
+    for (std::size_t b = 0; b < Plan::blocks; ++b) {
+        if (Plan::x_blocks[b] != 0)
+            for (std::size_t v = 0; v < c.chi.count; ++v)
+                for (std::size_t i = 0; i < Plan::block; ++i) xs[v * U + b * Plan::block + i] = T(0);
+        if (Plan::y_blocks[b] != 0)
+            for (std::size_t t = 0; t < c.psi.count; ++t)
+                for (std::size_t i = 0; i < Plan::block; ++i) ys[t * U + b * Plan::block + i] = T(0);
+    }
     for (std::size_t j = 0; j < LX.size(); ++j) {
         const blade_mask m = LX.masks[j];
         for (std::size_t v = 0; v < c.chi.count; ++v)
-            xs[v * U + m] = (LX.signs[j] < 0) != (((c.chi.values[v] >> (m & low_mask)) & 1u) != 0) ? T(-x[j]) : x[j];
+            xs[v * U + m] = ((LX.signs[j] < 0) != (((c.chi.values[v] >> (m & low_mask)) & 1u) != 0)) != Negate ? T(-x[j]) : x[j];
     }
     for (std::size_t j = 0; j < LY.size(); ++j) {
         const blade_mask m = LY.masks[j];
         for (std::size_t t = 0; t < c.psi.count; ++t)
             ys[t * U + m] = (LY.signs[j] < 0) != odd_overlap(m & low_mask, c.psi.values[t]) ? T(-y[j]) : y[j];
     }
-    std::array<T, U> acc{};
     [&]<std::size_t... V>(std::index_sequence<V...>) {
-        (run_block_pairs<T, Plan, V>(xs.data(), ys.data(), acc.data()), ...);
+        (run_block_pairs<T, Plan, V>(xs.data(), ys.data(), acc), ...);
     }(std::make_index_sequence<Plan::kernel_count>{});
-    std::array<T, OL.size()> out{};
-    for (std::size_t k = 0; k < OL.size(); ++k)
-        if (OL.masks[k] < U) out[k] = OL.signs[k] > 0 ? acc[OL.masks[k]] : T(-acc[OL.masks[k]]);
-    return out;
 }
 
-// x ∘ y into OL: by blocks when the plan is used, else the table loop.
+// x ∘ y into OL by blocks.
+template <class T, class Plan, auto LX, auto LY, auto OL>
+constexpr std::array<T, OL.size()> run_blocks(const T* x, const T* y) noexcept {
+    std::array<T, Plan::universe> acc{};
+    run_blocks_into<T, Plan, LX, LY>(acc.data(), x, y);
+    return gather<T, Plan::universe, OL>(acc.data());
+}
+
+// acc ± x ∘ y: by blocks when the plan is used, else the table loop. The accumulator spans the
+// universe of the operands' generators (pair_rows::universe).
+template <class T, class Rule, auto LX, auto LY, bool Negate = false>
+constexpr void run_product_into(T* acc, const T* x, const T* y) noexcept {
+    using plan = block_plan<Rule, LX, LY>;
+    if constexpr (plan::used) run_blocks_into<T, plan, LX, LY, Negate>(acc, x, y);
+    else run_rows_into<T, pair_rows<Rule, LX, LY>, LY, Negate>(acc, x, y);
+}
+
+// ---- the other half as the low generators ---------------------------------------------------
+//
+// A block product reads its operands in blocks of the four low generators. In a doubled algebra
+// such as Cl(0,6,2) an operand can fill the blocks of the high half densely and those of the low
+// half sparsely: x ē, x a motor of one half and ē a blade of the other, is 8 blocks of one blade
+// each, where the table loop is faster than the kernel. The swap of the halves, generator
+// i ↔ i + n/2, is an automorphism φ of the algebra when the halves have the same squares (the
+// paper's bar, §5; the geometric and exterior products commute with it):
+//   φ(e_m) = σ(m) e_s(m),  s(m) the mask with its halves exchanged, σ(m) = (−1)^(|low m| |high m|)
+// the sign that re-sorts the word. φ is an involution, so x ∘ y = φ(φ(x) ∘ φ(y)): the same rule
+// on the swapped operands, whose blocks are dense, accumulated over the swapped blades and read
+// back through φ. Swapping a layout moves its masks and folds σ into its stored orientations.
+template <class Rule>
+struct rule_algebra {
+    using type = void;
+};
+template <class Alg>
+struct rule_algebra<rules::geometric<Alg>> {
+    using type = Alg;
+};
+template <class Alg>
+struct rule_algebra<rules::exterior<Alg>> {
+    using type = Alg;
+};
+template <class Rule>
+inline constexpr bool halves_swap = [] {
+    using Alg = typename rule_algebra<Rule>::type;
+    if constexpr (std::is_void_v<Alg>) {
+        return false;
+    } else {
+        if (Alg::dimension % 2 != 0 || Alg::dimension < 2 * block_generators) return false;
+        for (std::size_t i = 0; i < Alg::dimension / 2; ++i)
+            if (Alg::squares[i] != Alg::squares[i + Alg::dimension / 2]) return false;
+        return true;
+    }
+}();
+
+template <class Rule, auto L>
+inline constexpr auto swapped_layout = [] {
+    constexpr std::size_t h = rule_algebra<Rule>::type::dimension / 2;
+    constexpr blade_mask low = static_cast<blade_mask>((blade_mask{1} << h) - 1);
+    auto copy = L;
+    for (std::size_t j = 0; j < L.size(); ++j) {
+        const blade_mask m = L.masks[j];
+        copy.masks[j] = static_cast<blade_mask>(((m & low) << h) | (m >> h));
+        if ((std::popcount(m & low) * std::popcount(static_cast<blade_mask>(m >> h))) % 2 != 0)
+            copy.signs[j] = static_cast<signed char>(-copy.signs[j]);
+    }
+    return copy;
+}();
+
+// Whether x ∘ y runs swapped: the block product is not used as the operands lie, and is once
+// they are swapped.
+template <class Rule, auto LX, auto LY>
+inline constexpr bool run_swapped = [] {
+    if constexpr (!halves_swap<Rule>) return false;
+    else if constexpr (block_plan<Rule, LX, LY>::used) return false;
+    else return block_plan<Rule, swapped_layout<Rule, LX>, swapped_layout<Rule, LY>>::used;
+}();
+
+// acc ± x ∘ y into the accumulator of its labelling: acc for the blades as they are, swapped for
+// the swapped blades (when run_swapped).
+template <class T, class Rule, auto LX, auto LY, bool Negate = false>
+constexpr void run_product_into(T* acc, T* swapped, const T* x, const T* y) noexcept {
+    if constexpr (run_swapped<Rule, LX, LY>)
+        run_product_into<T, Rule, swapped_layout<Rule, LX>, swapped_layout<Rule, LY>, Negate>(swapped, x, y);
+    else run_product_into<T, Rule, LX, LY, Negate>(acc, x, y);
+}
+
+// x ∘ y into OL.
 template <class T, class Rule, auto LX, auto LY, auto OL>
 constexpr std::array<T, OL.size()> run_product(const T* x, const T* y) noexcept {
-    using plan = block_plan<Rule, LX, LY>;
-    if constexpr (plan::used) return run_blocks<T, plan, LX, LY, OL>(x, y);
-    else return run_rows<T, pair_rows<Rule, LX, LY>, LY, OL>(x, y);
+    constexpr std::size_t U = pair_rows<Rule, LX, LY>::universe;
+    std::array<T, U> acc{};
+    if constexpr (run_swapped<Rule, LX, LY>) {
+        run_product_into<T, Rule, swapped_layout<Rule, LX>, swapped_layout<Rule, LY>>(acc.data(), x, y);
+        return gather<T, U, swapped_layout<Rule, OL>>(acc.data());
+    } else {
+        run_product_into<T, Rule, LX, LY>(acc.data(), x, y);
+        return gather<T, U, OL>(acc.data());
+    }
 }
 
 // ---- the looped node in the engine ----------------------------------------------------------

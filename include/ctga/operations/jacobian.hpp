@@ -154,10 +154,6 @@ struct column_rows {
             if (value_layout.contains(RowLayout.masks[r])) out[k++] = static_cast<std::uint16_t>(r);
         return out;
     }();
-    static constexpr expr::cost price = [] {
-        if constexpr (count == 0) return expr::cost{};
-        else return expr::program<D, rows>::price;
-    }();
 };
 
 template <class Node, auto RowLayout, class Columns, std::size_t C>
@@ -174,20 +170,15 @@ constexpr std::size_t fill_column(Pattern& p, std::size_t k, std::size_t c) {
     return k;
 }
 
-// Column C evaluated into its entries of J.
-template <std::size_t C, class Columns, auto RowLayout, class J, class E>
-CTGA_ALWAYS_INLINE constexpr void evaluate_column(J& out, const E& e) noexcept {
-    using Node = typename E::node_type;
-    using col = column_t<Node, RowLayout, Columns, C>;
-    if constexpr (col::count > 0) {
-        using D = expr::derive_t<Node, Columns::columns[C].leaf, Columns::columns[C].comp>;
-        const expression<typename E::algebra_type, typename E::scalar_type, D, typename E::leaves_type> column{e.leaves};
-        const auto v = column.template evaluate<typename E::scalar_type, col::rows>();
-        for (std::size_t r = 0; r < col::count; ++r) out.values[J::pattern.col_begin[C] + r] = v[r];
-    }
-}
+// Up to this many terms a Jacobian's program is unrolled (expr::inline_terms, 64, for other
+// programs): all its columns are one program, so it is longer than a value's. ∂ṡ/∂s of the
+// equations of motion is 306 terms: unrolled 88 ns, looped 0.9 µs, for 0.55 s more compile time.
+inline constexpr std::size_t inline_terms = 512;
 
-// A Jacobian from one column program per column (the value has looped products).
+// A Jacobian from one differentiated tree per column (the value has looped products). The
+// looped products, and their operands, that the columns read are computed once for all of them
+// (expr/run.hpp, shared units: G N and N G* of the moved inertia, expr/derivative.hpp), then each
+// column's own program.
 template <class Node, auto RowLayout, class Columns, class Cs = std::make_index_sequence<Columns::count>>
 struct by_columns;
 template <class Node, auto RowLayout, class Columns, std::size_t... C>
@@ -201,18 +192,44 @@ struct by_columns<Node, RowLayout, Columns, std::index_sequence<C...>> {
         p.col_begin[cols] = static_cast<std::uint32_t>(k);
         return p;
     }();
-    static constexpr expr::cost price = (column_t<Node, RowLayout, Columns, C>::price + ... + expr::cost{});
 
+    template <std::size_t K>
+    using tree = expr::derive_t<Node, Columns::columns[K].leaf, Columns::columns[K].comp>;
+    template <std::size_t K>
+    static constexpr auto column_units() {
+        if constexpr (column_t<Node, RowLayout, Columns, K>::count == 0) return expr::type_list<>{};
+        else return expr::root_units<tree<K>>();
+    }
+    using units = typename expr::unique_by_hash<decltype((expr::type_list<>{} + ... + column_units<C>()))>::type;
+
+    // the shared units once, then each column's own work
+    template <std::size_t K>
+    static constexpr expr::cost column_price() {
+        using col = column_t<Node, RowLayout, Columns, K>;
+        if constexpr (col::count == 0) return expr::cost{};
+        else return expr::root_price<tree<K>, col::rows>();
+    }
+    static constexpr expr::cost price = expr::units_price(units{}) + (column_price<C>() + ... + expr::cost{});
+
+    template <std::size_t K, class J, class T, class Store>
+    CTGA_ALWAYS_INLINE static constexpr void evaluate_column(J& out, const T* const* leaves, const Store& store) noexcept {
+        using col = column_t<Node, RowLayout, Columns, K>;
+        if constexpr (col::count > 0) {
+            const auto v = expr::compute_from_units<T, units, tree<K>, col::rows, inline_terms>(leaves, store);
+            for (std::size_t r = 0; r < col::count; ++r) out.values[J::pattern.col_begin[K] + r] = v[r];
+        }
+    }
     template <class J, class E>
     CTGA_ALWAYS_INLINE static constexpr void evaluate(J& out, const E& e) noexcept {
-        (evaluate_column<C, Columns, RowLayout>(out, e), ...);
+        using T = typename E::scalar_type;
+        using store_type = typename expr::unit_store<T, units>::type;
+        const auto leaves = e.template leaf_data<T>();
+        store_type store{};
+        expr::compute_units<T, units>(leaves.data(), store, std::make_index_sequence<std::tuple_size_v<store_type>>{});
+        (evaluate_column<C>(out, leaves.data(), store), ...);
     }
 };
 
-// Up to this many terms a Jacobian's program is unrolled (expr::inline_terms, 64, for other
-// programs): all its columns are one program, so it is longer than a value's. ∂ṡ/∂s of the
-// equations of motion is 306 terms: unrolled 88 ns, looped 0.9 µs, for 0.55 s more compile time.
-inline constexpr std::size_t inline_terms = 512;
 
 // A Jacobian from the value's program differentiated (expr/differentiate.hpp): one program for
 // all columns, sharing the value's temporaries.

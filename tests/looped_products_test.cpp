@@ -90,6 +90,20 @@ TEST_CASE("Cl(0,6,2): block products and the table loop, both for every rule, eq
 
 // ---- looped products inside expressions -----------------------------------------------------------
 
+TEST_CASE("Cl(0,6,2): a product whose operand fills the high half's blocks runs with the halves swapped",
+          "[looped][cl062][blocks]") {
+    using motor_blade = ctga::multivector<ctga::cl062, double, motor_times_blade>;
+    using geometric = ctga::rules::geometric<ctga::cl062>;
+    // as the blades lie the block product is refused (8 block pairs of one blade); swapped, used
+    static_assert(!ctga::expr::block_plan<geometric, motor_blade::layout, even<ctga::cl062>::layout>::used);
+    static_assert(ctga::expr::run_swapped<geometric, motor_blade::layout, even<ctga::cl062>::layout>);
+    static_assert(ctga::expr::run_swapped<geometric, even<ctga::cl062>::layout, motor_blade::layout>);
+    std::mt19937_64 rng(24);
+    check_all_products<motor_blade, even<ctga::cl062>>("Cl(0,6,2) motor-blade x even", rng);
+    check_all_products<even<ctga::cl062>, motor_blade>("Cl(0,6,2) even x motor-blade", rng);
+    check_both_loops<motor_blade, even<ctga::cl062>>("Cl(0,6,2) motor-blade x even", rng);
+}
+
 TEST_CASE("looped products compose: operands that are expressions, sums, projections, formulas",
           "[looped][engine]") {
     std::mt19937_64 rng(7);

@@ -112,7 +112,32 @@ void check_both_loops(const std::string& where, Rng& rng) {
                     expected);
         check_close(name + " by the table loop",
                     dense_of<Alg, OL>(ctga::expr::run_rows<double, rows, Y::layout, OL>(x.data(), y.data())), expected);
+        // the same product with the halves of the generators swapped (an automorphism where the
+        // halves have the same squares, expr::swapped_layout): by blocks over the swapped
+        // blades, read back through the swap
+        if constexpr (ctga::expr::halves_swap<Rule>) {
+            constexpr auto SX = ctga::expr::swapped_layout<Rule, X::layout>;
+            constexpr auto SY = ctga::expr::swapped_layout<Rule, Y::layout>;
+            using swapped = ctga::expr::block_plan<Rule, SX, SY>;
+            std::array<double, swapped::universe> acc{};
+            ctga::expr::run_blocks_into<double, swapped, SX, SY>(acc.data(), x.data(), y.data());
+            check_close(name + " by blocks, halves swapped",
+                        dense_of<Alg, OL>(ctga::expr::gather<double, swapped::universe, ctga::expr::swapped_layout<Rule, OL>>(acc.data())),
+                        expected);
+        }
     });
 }
+
+// x ē with x a motor of one half of Cl(0,6,2) and ē a blade of the other (a Jacobian column of the
+// moved inertia): 8 blocks of one low blade each, one dense block once the halves are swapped.
+inline constexpr auto motor_times_blade = [] {
+    ctga::layout<8> l;
+    constexpr blade_mask even4[8] = {0x0, 0x3, 0x5, 0x6, 0x9, 0xa, 0xc, 0xf};
+    for (std::size_t i = 0; i < 8; ++i) {
+        l.masks[i] = static_cast<blade_mask>(even4[i] << 4 | 0x9);
+        l.signs[i] = static_cast<signed char>(i % 3 == 1 ? -1 : 1);  // some stored orientations reversed
+    }
+    return l;
+}();
 
 }  // namespace ctga::test::looped

@@ -618,7 +618,8 @@ CTGA_ALWAYS_INLINE constexpr void accumulate(const T* x, const T* y, T* o) noexc
 // out += K(x, y) on one block pair: the output block held in locals (they alias nothing, so
 // the compiler keeps them in registers across the kernel).
 template <class T, class Kernel, std::size_t... I>
-CTGA_ALWAYS_INLINE constexpr void run_kernel(const T* x, const T* y, T* out, std::index_sequence<I...>) noexcept {
+CTGA_ALWAYS_INLINE constexpr void run_kernel([[maybe_unused]] const T* x, [[maybe_unused]] const T* y, T* out,
+                                             std::index_sequence<I...>) noexcept {
     std::array<T, Kernel::block> o{};
     for (std::size_t i = 0; i < Kernel::block; ++i) o[i] = out[i];
     (accumulate<T, Kernel::terms[I]>(x, y, o.data()), ...);

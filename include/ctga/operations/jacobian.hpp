@@ -6,8 +6,10 @@
 // (expr/differentiate.hpp): one program computes every column (one per component of the chosen
 // argument), the value's temporaries shared by all, and an entry whose derivative has no terms is
 // a structural zero. Where the value loops a product (expr/looped.hpp), whose result the program
-// reads as a leaf, each column is instead the differentiated expression tree (expr::derive_t),
-// with its own program and its rows from its own normal form:
+// reads as a leaf, each column is instead the differentiated expression tree (expr::derive_t,
+// its products re-associated so that the factors free of the column multiply once), the looped
+// products the columns read computed once for all of them, and each column's rows from its own
+// normal form:
 //
 //   auto J = ctga::jacobian<1>(ctga::momentum.formula, N, s);       // ∂P/∂s: 6 × 6, N's pattern
 //   double x = J(r, c);                                              // ∂ out[r] / ∂ s[c]

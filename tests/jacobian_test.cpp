@@ -1,6 +1,6 @@
 // Exact compile-time Jacobians (ctga::jacobian, operations/jacobian.hpp) against references that
 // share nothing with the engine's differentiation: the same formula run on forward-mode dual
-// numbers (tests/support/dual.hpp), and central finite differences (tests/support/jacobian_check.hpp).
+// numbers (tests/support/jacobian_check.hpp, tests/support/dual.hpp), and central finite differences.
 #include <array>
 #include <cmath>
 #include <cstddef>

@@ -173,22 +173,18 @@ template <class R, class X>
 struct factors_of {
     static constexpr bool is = false;
 };
-template <class R, class A, class B>
-struct factors_of<R, product<R, A, B>> {
+template <class A, class B, template <class, class, class> class P>
+struct two_factors {
     static constexpr bool is = true;
     using left = A;
     using right = B;
     template <class R2, class L, class Q>
-    using node = product<R2, L, Q>;
+    using node = P<R2, L, Q>;
 };
 template <class R, class A, class B>
-struct factors_of<R, looped<R, A, B>> {
-    static constexpr bool is = true;
-    using left = A;
-    using right = B;
-    template <class R2, class L, class Q>
-    using node = looped<R2, L, Q>;
-};
+struct factors_of<R, product<R, A, B>> : two_factors<A, B, product> {};
+template <class R, class A, class B>
+struct factors_of<R, looped<R, A, B>> : two_factors<A, B, looped> {};
 template <class R, class M, class X>
     requires(factors_of<R, X>::is && morphism_of<M, R> != morphism::none)
 struct factors_of<R, map<M, X>> {

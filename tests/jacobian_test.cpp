@@ -61,7 +61,7 @@ TEST_CASE("the adjoint g s g*: Jacobians in the motor and in the screw agree wit
     // Jacobian is taken column by column from the differentiated tree (expr/derivative.hpp)
     // instead of from the differentiated program (expr/differentiate.hpp). Both against the dual
     // numbers, and against each other.
-    constexpr auto looped_adjoint = formula([](auto g, auto s) { return looped(g * s * conj(g)); });
+    constexpr auto looped_adjoint = formula([](auto g, auto s) { return loop_products(g * s * conj(g)); });
     // (a looped product hides the cancellations of g s g*: its value's layout is wider than a screw)
     using looped_value = std::remove_cvref_t<decltype(eval(looped_adjoint(motor<double>{}, screw<double>{})))>;
     STATIC_REQUIRE(looped_value::size() > screw<double>::size());

@@ -79,9 +79,9 @@ TEST_CASE("Cl(0,6,2): block products and the table loop, both for every rule, eq
     // the engine's choice: blocks for the full products, the table loop for sparse operands and
     // for the scalar product (8 surviving pairs per block pair)
     static_assert(by_blocks<decltype(full{} * full{})> && by_blocks<decltype(full{} ^ full{})>);
-    static_assert(by_blocks<decltype(ctga::looped(full{} & full{}))> && by_blocks<decltype(ctga::looped(full{} | full{}))>);
-    static_assert(!by_blocks<decltype(ctga::looped(ctga::scalar_product(full{}, full{})))>);
-    static_assert(!by_blocks<decltype(ctga::looped(even<ctga::cl062>{} * random_mv<ctga::cl062, 5, 40>{}))>);
+    static_assert(by_blocks<decltype(ctga::loop_products(full{} & full{}))> && by_blocks<decltype(ctga::loop_products(full{} | full{}))>);
+    static_assert(!by_blocks<decltype(ctga::loop_products(ctga::scalar_product(full{}, full{})))>);
+    static_assert(!by_blocks<decltype(ctga::loop_products(even<ctga::cl062>{} * random_mv<ctga::cl062, 5, 40>{}))>);
     check_both_loops<full, full>("Cl(0,6,2) general", rng);
     check_both_loops<random_mv<ctga::cl062, 3, 256>, random_mv<ctga::cl062, 4, 256>>("Cl(0,6,2) shuffled", rng);
     check_both_loops<even<ctga::cl062>, random_mv<ctga::cl062, 5, 40>>("Cl(0,6,2) even x 40 blades", rng);

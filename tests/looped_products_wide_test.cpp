@@ -27,10 +27,10 @@ TEST_CASE("Cl(3,0,1): forcing looped or unrolled gives the same products", "[loo
     static_assert(!is_looped<decltype(full{} * full{})>, "192 pairs: unrolled by default");
     const auto a = random_fill<full>(rng);
     const auto b = random_fill<random_mv<cl301, 7, 11>>(rng);
-    static_assert(is_looped<decltype(ctga::looped(a * b))>);
+    static_assert(is_looped<decltype(ctga::loop_products(a * b))>);
     check_all_products<full, random_mv<cl301, 7, 11>>("Cl(3,0,1)", rng);
-    check_close("Cl(3,0,1) looped against unrolled", ctga::looped(a * b), ctga::unrolled(a * b));
-    check_close("Cl(3,0,1) looped against unrolled, ∨", ctga::looped(a & b), ctga::unrolled(a & b));
+    check_close("Cl(3,0,1) looped against unrolled", ctga::loop_products(a * b), ctga::unroll_products(a * b));
+    check_close("Cl(3,0,1) looped against unrolled, ∨", ctga::loop_products(a & b), ctga::unroll_products(a & b));
     // four generators: one block, the block product is the low kernel alone
     check_both_loops<full, random_mv<cl301, 7, 11>>("Cl(3,0,1)", rng);
 }

@@ -6,7 +6,8 @@
 #
 # (core.hpp and ctga.hpp, the umbrella headers, and reference/dense.hpp, which uses only the
 # algebra's description, sit outside.) A reader of algebra/ never needs expr/, and so on up.
-# Also refused: a declaration in one layer of a class template that a higher layer defines
+# Also refused: the core unit (bench/compile/core_only.cpp) reading the derivative headers, and
+# a declaration in one layer of a class template that a higher layer defines
 # (a forward-declared hook such as `class expression;` in algebra/).
 # Usage: check.sh <include/ctga directory>
 set -euo pipefail
@@ -52,6 +53,35 @@ for ((i = 0; i < ${#layers[@]} - 1; i++)); do
         done
     done < <(find "$root/$layer" -name '*.hpp' -print0)
 done
+
+# The core unit (bench/compile/core_only.cpp: the algebra and the engine, one motor product) does
+# not parse the derivative rules nor the Jacobian machinery: evaluating an expression never
+# needs them (they are included by operations/jacobian.hpp only).
+core_unit="$root/../../bench/compile/core_only.cpp"
+derivative_headers=(expr/derivative.hpp expr/differentiate.hpp expr/shared_units.hpp operations/jacobian.hpp)
+if [[ -f "$core_unit" ]]; then
+    declare -A seen=()
+    queue=()
+    while IFS= read -r target; do queue+=("$target"); done < <(sed -n 's|^[[:space:]]*#[[:space:]]*include[[:space:]]*["<]ctga/\([^">]*\)[">].*|\1|p' "$core_unit")
+    while ((${#queue[@]})); do
+        h=${queue[0]}
+        queue=("${queue[@]:1}")
+        [[ -n "${seen[$h]:-}" ]] && continue
+        seen[$h]=1
+        [[ -f "$root/$h" ]] || continue
+        while IFS= read -r target; do queue+=("$target"); done < <(sed -n 's|^[[:space:]]*#[[:space:]]*include[[:space:]]*["<]ctga/\([^">]*\)[">].*|\1|p' "$root/$h")
+    done
+    for h in "${derivative_headers[@]}"; do
+        if [[ -n "${seen[$h]:-}" ]]; then
+            echo "layering: the core unit bench/compile/core_only.cpp includes ctga/$h (derivatives belong to operations/jacobian.hpp only)"
+            status=1
+        fi
+    done
+    ((status == 0)) && echo "layering: the core unit reads ${#seen[@]} headers, none of the derivative headers"
+else
+    echo "layering: $core_unit not found"
+    status=1
+fi
 
 # the same check, on a line: ctga's own headers count as checked
 count=$(find "$root" -name '*.hpp' | wc -l)

@@ -53,7 +53,7 @@ void check_all_products(const std::string& where, Rng& rng) {
     const auto y = random_fill<Y>(rng);
     hana::for_each(bilinear_ops, [&](const auto& op) {
         const std::string name = where + ", " + hana::to<const char*>(op[hana::size_c<0>]);
-        const auto sparse = ctga::eval(ctga::looped(op[hana::size_c<1>](x, y)));
+        const auto sparse = ctga::eval(ctga::loop_products(op[hana::size_c<1>](x, y)));
         check_close(name, sparse, op[hana::size_c<2>](as_dense(x), as_dense(y)));
     });
 }

@@ -77,15 +77,21 @@ using add_t = typename add<X, Y, S>::type;
 // Whether a node is a constant: a constant, or linear images and sums of constants (the
 // derivative of a leaf, lifted or barred).
 template <class N>
-inline constexpr bool constant_node = false;
-template <auto L, auto C>
-inline constexpr bool constant_node<constant<L, C>> = true;
-template <class R, class X>
-inline constexpr bool constant_node<map<R, X>> = constant_node<X>;
-template <rational Q, class X>
-inline constexpr bool constant_node<scaled<Q, X>> = constant_node<X>;
-template <class X, class Y, int S>
-inline constexpr bool constant_node<sum<X, Y, S>> = constant_node<X> && constant_node<Y>;
+constexpr bool constant_node_of();
+template <class... C>
+constexpr bool all_constant(type_list<C...>) {
+    return (constant_node_of<C>() && ...);
+}
+template <class N>
+constexpr bool constant_node_of() {
+    using shape = shape_for<walker::is_constant, N>;
+    if constexpr (shape::kind == node_kind::constant) return true;
+    else if constexpr (shape::kind == node_kind::map || shape::kind == node_kind::scaled || shape::kind == node_kind::sum)
+        return all_constant(typename shape::children{});
+    else return false;
+}
+template <class N>
+inline constexpr bool constant_node = constant_node_of<N>();
 
 // The product node P<R, X, Y> (product or looped), zero when a factor is. A product with a
 // constant factor (a leaf's derivative: one blade, or a few) stays symbolic whatever P is: its
@@ -96,31 +102,12 @@ using times_t = std::conditional_t<is_zero_node<X> || is_zero_node<Y>, zero_node
 
 }  // namespace derivative_detail
 
-// ∂N/∂(component Comp of leaf Leaf).
+// ∂N/∂(component Comp of leaf Leaf): one rule per node kind (nodes.hpp), below.
 template <class N, std::size_t Leaf, std::size_t Comp>
-struct derive {
-    using type = zero_node;  // constants (and the zero element)
-};
+struct derive;
 template <class N, std::size_t Leaf, std::size_t Comp>
 using derive_t = typename derive<N, Leaf, Comp>::type;
 
-template <std::size_t I, auto L, std::size_t Leaf, std::size_t Comp>
-struct derive<leaf<I, L>, Leaf, Comp> {
-    static constexpr auto pick() {
-        if constexpr (I == Leaf) {
-            static_assert(Comp < L.size(), "ctga::derivative: the leaf has no such component");
-            return derivative_detail::unit_component<L, Comp>{};
-        } else {
-            return zero_node{};
-        }
-    }
-    using type = decltype(pick());
-};
-template <std::size_t I, auto L, std::size_t Leaf, std::size_t Comp>
-struct derive<arg<I, L>, Leaf, Comp> {
-    static_assert(I != I, "ctga::derivative: differentiate a bound formula (its arguments are leaves), not a formula's body");
-    using type = zero_node;
-};
 namespace derivative_detail {
 
 // (x ∘ y) ∘ z = x ∘ (y ∘ z) for every blade triple: the geometric and exterior products.
@@ -132,7 +119,7 @@ template <class Alg>
 inline constexpr bool associative<rules::exterior<Alg>> = true;
 
 // A product that every column reads unchanged: looped (computed once, shared by the columns) past
-// the size at which a program stops being unrolled anyway (run.hpp, inline_terms), else left to
+// the size at which a program stops being unrolled anyway (run.hpp, unroll_limit), else left to
 // the symbolic engine inside each column.
 template <class R, class X, class Y>
 using shared_product_t =
@@ -256,29 +243,49 @@ constexpr auto right_times() {
 template <template <class, class, class> class P, class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
 using leibniz_t = add_t<decltype(left_times<P, R, X, Y, Leaf, Comp>()), decltype(right_times<P, R, X, Y, Leaf, Comp>()), 1>;
 
+template <template <class, class, class> class P, class R, std::size_t Leaf, std::size_t Comp, class X, class Y>
+auto leibniz_of(type_list<X, Y>) -> leibniz_t<P, R, X, Y, Leaf, Comp>;
+template <class Shape, std::size_t Leaf, std::size_t Comp, class X>
+auto through_linear(type_list<X>) -> std::conditional_t<is_zero_node<derive_t<X, Leaf, Comp>>, zero_node,
+                                                        typename Shape::template with<derive_t<X, Leaf, Comp>>>;
+template <int S, std::size_t Leaf, std::size_t Comp, class X, class Y>
+auto sum_derivative(type_list<X, Y>) -> add_t<derive_t<X, Leaf, Comp>, derive_t<Y, Leaf, Comp>, S>;
+
 }  // namespace derivative_detail
 
-template <class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
-struct derive<product<R, X, Y>, Leaf, Comp> {
-    using type = derivative_detail::leibniz_t<product, R, X, Y, Leaf, Comp>;
-};
-template <class R, class X, class Y, std::size_t Leaf, std::size_t Comp>
-struct derive<looped<R, X, Y>, Leaf, Comp> {
-    using type = derivative_detail::leibniz_t<looped, R, X, Y, Leaf, Comp>;
-};
-template <class R, class X, std::size_t Leaf, std::size_t Comp>
-struct derive<map<R, X>, Leaf, Comp> {
-    using dx = derive_t<X, Leaf, Comp>;
-    using type = std::conditional_t<is_zero_node<dx>, zero_node, map<R, dx>>;
-};
-template <class X, class Y, int S, std::size_t Leaf, std::size_t Comp>
-struct derive<sum<X, Y, S>, Leaf, Comp> {
-    using type = derivative_detail::add_t<derive_t<X, Leaf, Comp>, derive_t<Y, Leaf, Comp>, S>;
-};
-template <rational Q, class X, std::size_t Leaf, std::size_t Comp>
-struct derive<scaled<Q, X>, Leaf, Comp> {
-    using dx = derive_t<X, Leaf, Comp>;
-    using type = std::conditional_t<is_zero_node<dx>, zero_node, scaled<Q, dx>>;
+template <class N, std::size_t Leaf, std::size_t Comp>
+struct derive {
+    static constexpr auto pick() {
+        using shape = shape_for<walker::derive, N>;
+        using children = typename shape::children;
+        if constexpr (shape::kind == node_kind::data_leaf) {
+            // ∂ leaf ℓ = the unit constant on component j's blade; any other leaf: 0
+            if constexpr (shape::index == Leaf) {
+                static_assert(Comp < shape::layout.size(), "ctga::derivative: the leaf has no such component");
+                return derivative_detail::unit_component<shape::layout, Comp>{};
+            } else {
+                return zero_node{};
+            }
+        } else if constexpr (shape::kind == node_kind::argument) {
+            static_assert(shape::kind != node_kind::argument,
+                          "ctga::derivative: differentiate a bound formula (its arguments are leaves), not a formula's body");
+            return zero_node{};
+        } else if constexpr (shape::kind == node_kind::constant) {
+            return zero_node{};
+        } else if constexpr (shape::kind == node_kind::product) {
+            return decltype(derivative_detail::leibniz_of<product, typename shape::rule, Leaf, Comp>(children{})){};
+        } else if constexpr (shape::kind == node_kind::looped) {
+            return decltype(derivative_detail::leibniz_of<looped, typename shape::rule, Leaf, Comp>(children{})){};
+        } else if constexpr (shape::kind == node_kind::map || shape::kind == node_kind::scaled) {
+            return decltype(derivative_detail::through_linear<shape, Leaf, Comp>(children{})){};
+        } else if constexpr (shape::kind == node_kind::sum) {
+            return decltype(derivative_detail::sum_derivative<shape::sign, Leaf, Comp>(children{})){};
+        } else {
+            static_assert(shape::kind != shape::kind, "ctga::expr::derive: no derivation rule for this node kind");
+            return zero_node{};
+        }
+    }
+    using type = decltype(pick());
 };
 
 }  // namespace ctga::expr

@@ -57,41 +57,49 @@ struct scalar_leaf {  // a runtime scalar
 };
 
 // Renaming the leaves of a node tree: Map::on_leaf<I, L> and Map::on_arg<I, L> give each leaf's
-// new node; interior nodes are rebuilt around their renamed children.
+// new node; every other node is rebuilt around its renamed children (nodes.hpp, node_shape).
 template <class N, class Map>
-struct relabel { using type = N; };  // constants
+struct relabel;
 template <class N, class Map>
 using relabel_t = typename relabel<N, Map>::type;
-template <std::size_t I, auto L, class M>
-struct relabel<leaf<I, L>, M> { using type = typename M::template on_leaf<I, L>; };
-template <std::size_t I, auto L, class M>
-struct relabel<arg<I, L>, M> { using type = typename M::template on_arg<I, L>; };
-template <class R, class X, class Y, class M>
-struct relabel<product<R, X, Y>, M> { using type = product<R, relabel_t<X, M>, relabel_t<Y, M>>; };
-template <class R, class X, class Y, class M>
-struct relabel<looped<R, X, Y>, M> { using type = looped<R, relabel_t<X, M>, relabel_t<Y, M>>; };
-template <class R, class X, class M>
-struct relabel<map<R, X>, M> { using type = map<R, relabel_t<X, M>>; };
-template <class X, class Y, int S, class M>
-struct relabel<sum<X, Y, S>, M> { using type = sum<relabel_t<X, M>, relabel_t<Y, M>, S>; };
-template <rational Q, class X, class M>
-struct relabel<scaled<Q, X>, M> { using type = scaled<Q, relabel_t<X, M>>; };
+template <class Map>
+struct relabel_children {
+    template <class C>
+    using on = relabel_t<C, Map>;
+};
+template <class N, class Map>
+struct relabel {
+    static constexpr node_kind kind = shape_for<walker::relabel, N>::kind;
+    static constexpr auto pick() {
+        if constexpr (kind == node_kind::data_leaf) return typename Map::template on_leaf<node_shape<N>::index, node_shape<N>::layout>{};
+        else if constexpr (kind == node_kind::argument) return typename Map::template on_arg<node_shape<N>::index, node_shape<N>::layout>{};
+        else return rebuild_t<walker::relabel, N, relabel_children<Map>>{};
+    }
+    using type = decltype(pick());
+};
 
 // Every product of a node tree formed again in mode M (looped or unrolled, as the user forces).
 template <class N, product_mode M>
-struct reform { using type = N; };  // leaves, arguments, constants
+struct reform;
 template <class N, product_mode M>
 using reform_t = typename reform<N, M>::type;
-template <class R, class X, class Y, product_mode M>
-struct reform<product<R, X, Y>, M> { using type = product_node<R, reform_t<X, M>, reform_t<Y, M>, M>; };
-template <class R, class X, class Y, product_mode M>
-struct reform<looped<R, X, Y>, M> { using type = product_node<R, reform_t<X, M>, reform_t<Y, M>, M>; };
-template <class R, class X, product_mode M>
-struct reform<map<R, X>, M> { using type = map<R, reform_t<X, M>>; };
-template <class X, class Y, int S, product_mode M>
-struct reform<sum<X, Y, S>, M> { using type = sum<reform_t<X, M>, reform_t<Y, M>, S>; };
-template <rational Q, class X, product_mode M>
-struct reform<scaled<Q, X>, M> { using type = scaled<Q, reform_t<X, M>>; };
+template <product_mode M>
+struct reform_children {
+    template <class C>
+    using on = reform_t<C, M>;
+};
+template <class Shape, product_mode M, class X, class Y>
+auto reformed_product(type_list<X, Y>) -> product_node<typename Shape::rule, reform_t<X, M>, reform_t<Y, M>, M>;
+template <class N, product_mode M>
+struct reform {
+    static constexpr auto pick() {
+        using shape = shape_for<walker::reform, N>;
+        if constexpr (shape::kind == node_kind::product || shape::kind == node_kind::looped)
+            return decltype(reformed_product<shape, M>(typename shape::children{})){};
+        else return rebuild_t<walker::reform, N, reform_children<M>>{};
+    }
+    using type = decltype(pick());
+};
 
 // The right operand of a combination: its data leaves numbered after the left operand's.
 template <std::size_t Off>

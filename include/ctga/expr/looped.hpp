@@ -35,11 +35,12 @@
 #include "ctga/expr/staging.hpp"
 #include "ctga/support/inline.hpp"
 
-// The number of surviving blade pairs above which a product is looped instead of unrolled
-// (see expr::loop_threshold). Define it before including ctga to move the threshold for a
-// whole program; ctga::looped(x) and ctga::unrolled(x) choose for one expression.
-#ifndef CTGA_LOOP_THRESHOLD
-#define CTGA_LOOP_THRESHOLD 1024
+// The loop threshold is one constant of the library, not a macro: a threshold set differently in
+// two translation units would give one inline function (an operator, an operation) two bodies
+// and two result types, an ODR violation no linker reports. One expression chooses for itself
+// with ctga::loop_products(x) / ctga::unroll_products(x).
+#ifdef CTGA_LOOP_THRESHOLD
+#error "ctga: CTGA_LOOP_THRESHOLD is no longer read: a threshold that differs between translation units breaks the one-definition rule. Choose per expression with ctga::loop_products(x) or ctga::unroll_products(x)."
 #endif
 
 namespace ctga::expr {
@@ -48,8 +49,8 @@ namespace ctga::expr {
 // is multiplied out symbolically (cancellations found, straight-line code, each pair one term
 // of the program); past it the symbolic terms cost far more to compile than the loop costs to
 // run (docs/engine.md, "Unrolled or looped").
-inline constexpr std::size_t loop_threshold = CTGA_LOOP_THRESHOLD;
-static_assert(loop_threshold <= term_budget, "ctga: CTGA_LOOP_THRESHOLD cannot exceed expr::term_budget");
+inline constexpr std::size_t loop_threshold = 1024;
+static_assert(loop_threshold <= term_budget, "ctga: expr::loop_threshold cannot exceed expr::term_budget");
 
 // Whether a product node is formed by the engine's choice, or forced either way.
 enum class product_mode { by_threshold, unrolled, looped };
@@ -776,30 +777,33 @@ inline constexpr source_id looped_bit = source_id{1} << 42;
 constexpr source_id looped_id(std::uint64_t hash) { return looped_bit | (hash & (looped_bit - 1)); }
 constexpr bool is_looped_source(source_id s) { return (s & intermediate_bit) == 0 && (s & looped_bit) != 0; }
 
-// An operand's storage layout: a leaf is read in place, anything else is evaluated into the
-// canonical layout of its blades.
+// An operand's storage: a data leaf is read in place, anything else is evaluated into the
+// canonical layout of its blades. A formula's argument has the layout of the leaf it will be
+// bound to (for the compile-time decisions on a formula's body); it has no storage to read.
 template <class X>
-inline constexpr bool read_in_place = false;
-template <std::size_t I, auto L>
-inline constexpr bool read_in_place<leaf<I, L>> = true;
-template <std::size_t I, auto L>
-inline constexpr bool read_in_place<arg<I, L>> = true;
+inline constexpr bool read_in_place = [] {
+    constexpr node_kind kind = shape_for<walker::read_operand, X>::kind;
+    return kind == node_kind::data_leaf || kind == node_kind::argument;
+}();
 template <class X>
-inline constexpr std::size_t leaf_index = 0;
-template <std::size_t I, auto L>
-inline constexpr std::size_t leaf_index<leaf<I, L>> = I;
+consteval std::size_t leaf_index() {
+    using shape = shape_for<walker::read_operand, X>;
+    static_assert(shape::kind != node_kind::argument,
+                  "ctga::expr: a formula's argument reached evaluation unbound: bind the formula (call it) first");
+    static_assert(shape::kind == node_kind::data_leaf, "ctga::expr: only a data leaf is read in place");
+    return shape::index;
+}
 
 template <class N>
-inline constexpr bool is_looped_node = false;
-template <class R, class X, class Y>
-inline constexpr bool is_looped_node<looped<R, X, Y>> = true;
+inline constexpr bool is_looped_node = shape_for<walker::looped_nodes, N>::kind == node_kind::looped;
 
 template <class X>
-inline constexpr auto operand_layout = node_layout<X>;
-template <std::size_t I, auto L>
-inline constexpr auto operand_layout<leaf<I, L>> = L;
-template <std::size_t I, auto L>
-inline constexpr auto operand_layout<arg<I, L>> = L;
+constexpr auto operand_layout_of() {
+    if constexpr (read_in_place<X>) return node_shape<X>::layout;
+    else return node_layout<X>;
+}
+template <class X>
+inline constexpr auto operand_layout = operand_layout_of<X>();
 
 template <class Rule, class X, class Y>
 using rows_of = pair_rows<Rule, operand_layout<X>, operand_layout<Y>>;
@@ -822,18 +826,18 @@ struct traits<looped<Rule, X, Y>, P> {
 
 // The outermost looped nodes of a tree (those inside a looped node are its operands' business).
 template <class N>
-struct looped_nodes { using type = type_list<>; };
+struct looped_nodes;
 template <class N>
 using looped_nodes_t = typename looped_nodes<N>::type;
-template <class R, class X, class Y>
-struct looped_nodes<looped<R, X, Y>> { using type = type_list<looped<R, X, Y>>; };
-template <class R, class X, class Y>
-struct looped_nodes<product<R, X, Y>> { using type = decltype(looped_nodes_t<X>{} + looped_nodes_t<Y>{}); };
-template <class X, class Y, int S>
-struct looped_nodes<sum<X, Y, S>> { using type = decltype(looped_nodes_t<X>{} + looped_nodes_t<Y>{}); };
-template <class R, class X>
-struct looped_nodes<map<R, X>> { using type = looped_nodes_t<X>; };
-template <rational Q, class X>
-struct looped_nodes<scaled<Q, X>> { using type = looped_nodes_t<X>; };
+template <class... C>
+auto looped_nodes_of(type_list<C...>) -> decltype((type_list<>{} + ... + looped_nodes_t<C>{}));
+template <class N>
+struct looped_nodes {
+    static constexpr auto pick() {
+        if constexpr (is_looped_node<N>) return type_list<N>{};
+        else return decltype(looped_nodes_of(typename node_shape<N>::children{})){};
+    }
+    using type = decltype(pick());
+};
 
 }  // namespace ctga::expr

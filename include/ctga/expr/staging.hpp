@@ -29,13 +29,6 @@ inline constexpr std::size_t term_budget = 4096;
 inline constexpr std::size_t expansion_budget = 2048;
 inline constexpr std::size_t proof_budget = 65536;
 
-template <class... Ts>
-struct type_list {};
-template <class... A, class... B>
-constexpr type_list<A..., B...> operator+(type_list<A...>, type_list<B...>) {
-    return {};
-}
-
 constexpr std::uint64_t mix(std::uint64_t h, std::uint64_t v) {
     h ^= v + 0x9e3779b97f4a7c15ull + (h << 6) + (h >> 2);
     h *= 0xbf58476d1ce4e5b9ull;
@@ -262,8 +255,8 @@ struct traits<product<Rule, X, Y>, staging::by_cost> {
     using chosen = product_option<Rule, X, Y, stage_x, stage_y>;
     static_assert(chosen::valid || (stage_x && stage_y),
                   "ctga: an expression node is too large to unroll even when staged: more blade pairs than "
-                  "expr::term_budget or monomials beyond expr::max_degree; evaluate it looped (ctga::looped(x)) "
-                  "instead of ctga::unrolled(x)");
+                  "expr::term_budget or monomials beyond expr::max_degree; evaluate it looped (ctga::loop_products(x)) "
+                  "instead of ctga::unroll_products(x)");
 
     static constexpr bool complete = true;
     static constexpr auto terms = chosen::terms;

@@ -37,14 +37,14 @@ template <multivector_type Target, operand X>
 // Unrolled or looped, by choice. The engine unrolls a product into straight-line code up to
 // expr::loop_threshold surviving blade pairs and loops over a table of them past it
 // (expr/looped.hpp); these force either for every product of x:
-//   auto p = ctga::looped(a * b);     // one loop, cheap to compile, for a large product
-//   auto q = ctga::unrolled(a * b);   // straight-line code (up to expr::term_budget pairs)
+//   auto p = ctga::loop_products(a * b);     // one loop, cheap to compile, for a large product
+//   auto q = ctga::unroll_products(a * b);   // straight-line code (up to expr::term_budget pairs)
 template <operand X>
-[[nodiscard]] constexpr auto looped(X&& x) noexcept {
+[[nodiscard]] constexpr auto loop_products(X&& x) noexcept {
     return expr::in_mode<expr::product_mode::looped>(std::forward<X>(x));
 }
 template <operand X>
-[[nodiscard]] constexpr auto unrolled(X&& x) noexcept {
+[[nodiscard]] constexpr auto unroll_products(X&& x) noexcept {
     return expr::in_mode<expr::product_mode::unrolled>(std::forward<X>(x));
 }
 

@@ -38,6 +38,7 @@
 #include "ctga/expr/derivative.hpp"
 #include "ctga/expr/differentiate.hpp"
 #include "ctga/expr/run.hpp"
+#include "ctga/expr/shared_units.hpp"
 #include "ctga/operations/formula.hpp"
 #include "ctga/support/inline.hpp"
 
@@ -172,10 +173,10 @@ constexpr std::size_t fill_column(Pattern& p, std::size_t k, std::size_t c) {
     return k;
 }
 
-// Up to this many terms a Jacobian's program is unrolled (expr::inline_terms, 64, for other
+// Up to this many terms a Jacobian's program is unrolled (expr::unroll_limit, 64, for other
 // programs): all its columns are one program, so it is longer than a value's. ∂ṡ/∂s of the
-// equations of motion is 306 terms: unrolled 88 ns, looped 0.9 µs, for 0.55 s more compile time.
-inline constexpr std::size_t inline_terms = 512;
+// equations of motion is 306 terms: unrolled 88 ns, interpreted 0.9 µs, for 0.55 s more compile time.
+inline constexpr std::size_t jacobian_unroll_limit = 512;
 
 // A Jacobian from one differentiated tree per column (the value has looped products). The
 // looped products, and their operands, that the columns read are computed once for all of them
@@ -217,7 +218,7 @@ struct by_columns<Node, RowLayout, Columns, std::index_sequence<C...>> {
     CTGA_ALWAYS_INLINE static constexpr void evaluate_column(J& out, const T* const* leaves, const Store& store) noexcept {
         using col = column_t<Node, RowLayout, Columns, K>;
         if constexpr (col::count > 0) {
-            const auto v = expr::compute_from_units<T, units, tree<K>, col::rows, inline_terms>(leaves, store);
+            const auto v = expr::compute_from_units<T, units, tree<K>, col::rows, jacobian_unroll_limit>(leaves, store);
             for (std::size_t r = 0; r < col::count; ++r) out.values[J::pattern.col_begin[K] + r] = v[r];
         }
     }
@@ -257,8 +258,8 @@ struct by_program {
     CTGA_ALWAYS_INLINE static constexpr void evaluate(J& out, const E& e) noexcept {
         using T = typename E::scalar_type;
         if constexpr (non_zeros == 0) return;
-        else if constexpr (D::terms.size() <= inline_terms) out.values = expr::run<T, D, non_zeros>(e.template leaf_data<T>().data());
-        else out.values = expr::run_looped<T, D, non_zeros>(e.template leaf_data<T>().data());
+        else if constexpr (D::terms.size() <= jacobian_unroll_limit) out.values = expr::run<T, D, non_zeros>(e.template leaf_data<T>().data());
+        else out.values = expr::run_interpreted<T, D, non_zeros>(e.template leaf_data<T>().data());
     }
 };
 

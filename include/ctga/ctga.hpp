@@ -6,6 +6,7 @@
 //   algebra/      blades, layouts, the algebra type, rules, multivector storage
 //   expr/         the expression engine: normal forms, staging, programs, running them
 //   operations/   the user-facing operations: operators, evaluation, formulas, printing
+//   geometry/     ready-made Cl(3,0,1) (namespace ctga::pga): points, lines, planes, motors
 //   mechanics/    the paper: algebras, screw, coscrew, motor, inertia, dynamics, convert
 //   integrators/  methods stepping any motion model
 //   scenes/       body kinds, scenes of many bodies, batches
@@ -16,6 +17,7 @@
 #include "ctga/chains/algorithms.hpp"
 #include "ctga/chains/motion.hpp"
 #include "ctga/core.hpp"
+#include "ctga/geometry/pga.hpp"
 #include "ctga/integrators/integrate.hpp"
 #include "ctga/integrators/methods.hpp"
 #include "ctga/integrators/model.hpp"

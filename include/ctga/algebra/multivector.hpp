@@ -216,6 +216,8 @@ struct basis_blade {
     using algebra_type = Alg;
     using scalar_type = void;  // exact: takes the scalar type of what it meets
     using blade = detail::blade_of<Alg, Name>;
+    // read the name where the constant is declared (G::basis<"…">), not where it is first used
+    static_assert(blade::parsed.status == blade_name_status::ok, "ctga: basis<Name>: Name is not a blade of this algebra");
     static constexpr ctga::layout<1> layout{{blade::mask}, {static_cast<signed char>(blade::sign)}};
 };
 

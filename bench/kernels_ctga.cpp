@@ -5,7 +5,7 @@ namespace bench {
 
 using namespace ctga;
 
-// N by its ten parameters (body_inertia, mechanics/inertia.hpp): the same element and the same 24m 18a as the
+// N by its ten parameters (body_inertia, mechanics/body_inertia.hpp): the same element and the same 24m 18a as the
 // 24-blade rigid_inertia, reading ten numbers
 coscrew<> momentum(const ctga_inputs& in) { return ctga::momentum(in.N, in.s); }
 double energy(const ctga_inputs& in) { return kinetic_energy(in.N, in.s); }

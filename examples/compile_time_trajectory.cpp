@@ -34,6 +34,7 @@
 #include <limits>
 
 #include <ctga/integrators/integrate.hpp>
+#include <ctga/integrators/rigid_body_motion.hpp>
 
 namespace {
 

@@ -16,6 +16,7 @@
 #include <Eigen/Dense>
 #include <boost/math/special_functions/ellint_1.hpp>
 
+#include <ctga/chains/algorithms.hpp>
 #include <ctga/chains/motion.hpp>
 #include <ctga/integrators/integrate.hpp>
 

@@ -40,8 +40,13 @@
 #include <ctga/mechanics/convert.hpp>
 #include <ctga/mechanics/dynamics.hpp>
 #include <ctga/mechanics/inertia.hpp>
+#include <ctga/mechanics/inertia_matrix.hpp>
+#include <ctga/mechanics/inertia_transform.hpp>
 #include <ctga/mechanics/linear3.hpp>
+#include <ctga/mechanics/mass_properties.hpp>
+#include <ctga/mechanics/momentum.hpp>
 #include <ctga/mechanics/motor.hpp>
+#include <ctga/mechanics/rigid_body.hpp>
 
 #include "support/catch.hpp"
 

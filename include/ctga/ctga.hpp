@@ -7,11 +7,12 @@
 //   expr/         the expression engine: normal forms, staging, programs, running them
 //   operations/   the user-facing operations: operators, evaluation, formulas, printing
 //   geometry/     ready-made Cl(3,0,1) (namespace ctga::pga): points, lines, planes, motors
-//   mechanics/    the paper: algebras, screw, coscrew, motor, inertia, dynamics, convert
-//   integrators/  methods stepping any motion model
+//   mechanics/    the paper: algebras, screw, coscrew, motor, the inertias (mass properties,
+//                 representations, 6×6 matrices, momentum and energy, transforms), dynamics, convert
+//   integrators/  the motion-model interface, methods stepping any model, ctga's rigid-body model
 //   scenes/       body kinds, scenes of many bodies, batches
-//   chains/       kinematic trees: joints, the tree type, FK, RNEA, CRBA, ABA, Jacobians,
-//                 the tree as an integrator model (motion.hpp)
+//   chains/       kinematic trees: joints, the tree type, FK, RNEA, CRBA, ABA, Jacobians (one header
+//                 each, algorithms.hpp), the tree as an integrator model (motion.hpp)
 #pragma once
 
 #include "ctga/chains/algorithms.hpp"
@@ -21,14 +22,21 @@
 #include "ctga/integrators/integrate.hpp"
 #include "ctga/integrators/methods.hpp"
 #include "ctga/integrators/model.hpp"
+#include "ctga/integrators/rigid_body_motion.hpp"
 #include "ctga/mechanics/algebras.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/convert.hpp"
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/deprecated.hpp"
 #include "ctga/mechanics/dynamics.hpp"
 #include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/inertia_matrix.hpp"
+#include "ctga/mechanics/inertia_transform.hpp"
 #include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/mass_properties.hpp"
+#include "ctga/mechanics/momentum.hpp"
 #include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/rigid_body.hpp"
 #include "ctga/mechanics/screw.hpp"
 #include "ctga/scenes/batch.hpp"
 #include "ctga/scenes/body_kinds.hpp"

@@ -1,6 +1,6 @@
 // EXPECT: no such body in the tree
 // The Jacobian of body 3 of a tree with bodies 0, 1 and 2.
-#include <ctga/chains/algorithms.hpp>
+#include <ctga/chains/frame_jacobian.hpp>
 
 using arm = ctga::chains::tree<ctga::chains::link<-1, ctga::chains::revolute_z>,
                                ctga::chains::link<0, ctga::chains::revolute_y>,

@@ -54,6 +54,7 @@
 #include <ctga/mechanics/algebras.hpp>
 #include <ctga/integrators/model.hpp>
 #include <ctga/mechanics/inertia.hpp>
+#include <ctga/mechanics/mass_properties.hpp>
 #include <ctga/reference/dense.hpp>
 
 namespace ctga::test {

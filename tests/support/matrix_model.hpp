@@ -38,6 +38,8 @@
 
 #include <ctga/integrators/model.hpp>
 #include <ctga/mechanics/inertia.hpp>
+#include <ctga/mechanics/inertia_matrix.hpp>
+#include <ctga/mechanics/mass_properties.hpp>
 #include <ctga/mechanics/motor.hpp>
 
 namespace ctga::test {

@@ -20,7 +20,11 @@
 #include <array>
 #include <cstddef>
 
-#include "ctga/chains/algorithms.hpp"
+#include "ctga/chains/aba.hpp"
+#include "ctga/chains/checked_call.hpp"
+#include "ctga/chains/energy.hpp"
+#include "ctga/chains/passes.hpp"
+#include "ctga/chains/tree.hpp"
 #include "ctga/integrators/model.hpp"
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/mechanics/screw.hpp"

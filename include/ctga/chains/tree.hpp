@@ -22,7 +22,8 @@
 #include <boost/hana/tuple.hpp>
 
 #include "ctga/chains/joints.hpp"
-#include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
+#include "ctga/mechanics/mass_properties.hpp"
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"

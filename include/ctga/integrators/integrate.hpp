@@ -12,6 +12,8 @@
 
 #include "ctga/integrators/methods.hpp"
 #include "ctga/integrators/model.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/math.hpp"
 
 namespace ctga {
 

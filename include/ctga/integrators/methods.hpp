@@ -24,6 +24,7 @@
 #include <utility>
 
 #include "ctga/integrators/model.hpp"
+#include "ctga/support/checked.hpp"
 
 namespace ctga {
 

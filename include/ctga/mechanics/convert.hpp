@@ -2,7 +2,8 @@
 // (Eigen, Pinocchio, RBDL): screws (ω, v) and co-screws (l, p) as 6-vectors, motors as 4×4
 // homogeneous matrices [R t; 0 0 0 1]. Plain std::array, so no dependency; with Eigen,
 // Eigen::Map<Eigen::Matrix<double, 4, 4, Eigen::RowMajor>>(m[0].data()) views a matrix. The 6×6
-// matrices of inertias and mobilities are in inertia.hpp (inertia_matrix, inertia_from_matrix, …).
+// matrices of inertias and mobilities are in inertia_matrix.hpp (inertia_matrix,
+// inertia_from_matrix, …).
 #pragma once
 
 #include <array>

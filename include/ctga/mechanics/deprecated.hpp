@@ -4,7 +4,7 @@
 
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/dynamics.hpp"
-#include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/momentum.hpp"
 #include "ctga/mechanics/screw.hpp"
 
 namespace ctga::paper {

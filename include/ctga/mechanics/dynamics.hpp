@@ -16,9 +16,14 @@
 
 #include <type_traits>
 
+#include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/inertia_transform.hpp"
+#include "ctga/mechanics/mass_properties.hpp"
+#include "ctga/mechanics/momentum.hpp"
 #include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/rigid_body.hpp"
 #include "ctga/mechanics/screw.hpp"
 #include "ctga/operations/formula.hpp"
 #include "ctga/support/inline.hpp"
@@ -44,7 +49,7 @@ inline constexpr auto motion_rate = formula([](auto N, auto M, auto s, auto W) {
 
 // ṡ from N ∧ ṡ + ½((s̄N − Ns̄) ∧ s) = W E, all four quantities in one frame. M is any mobility
 // (36 blades: a general 6×6 inverse inertia) or a rigid body's body_mobility, solved about the
-// centre of mass (inertia.hpp: E ∨ (M ∧ P) = t (E ∨ (M_c ∧ (t̄* P t̄))) t*, 24m 18a instead of 36m 30a).
+// centre of mass (body_inertia.hpp: E ∨ (M ∧ P) = t (E ∨ (M_c ∧ (t̄* P t̄))) t*, 24m 18a instead of 36m 30a).
 template <class T, class Inertia, class Mobility>
     requires(formula_argument<Inertia> &&
              (std::is_same_v<Mobility, mobility<T>> || std::is_same_v<Mobility, body_mobility<T>>))

@@ -9,7 +9,7 @@
 // ḡ P ḡ* = H⁻ᵀ P. motor_map holds R and t, built once from g (31m 24a and a division), and
 // applies the action at hand-written cost (24m 18a on a screw or a co-screw); the sandwich itself
 // is the formula ctga::adjoint, and the tests prove the two agree. The action on inertias is in
-// inertia.hpp, the 4×4 homogeneous matrices in convert.hpp.
+// inertia_transform.hpp, the 4×4 homogeneous matrices in convert.hpp.
 #pragma once
 
 #include <array>

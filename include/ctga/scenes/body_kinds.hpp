@@ -30,7 +30,10 @@
 
 #include "ctga/mechanics/dynamics.hpp"
 #include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/momentum.hpp"
+#include "ctga/mechanics/rigid_body.hpp"
 #include "ctga/integrators/model.hpp"
 
 namespace ctga {
@@ -148,7 +151,7 @@ struct diagonal {
 };
 
 // N as its 24 blades, M by the ten parameters of body_mobility (1/m, c, J): M = (t t̄) M_c (t t̄)*,
-// which acts about the centre of mass, E ∨ (M ∧ X) = t (E ∨ (M_c ∧ (t̄* X t̄))) t* (inertia.hpp).
+// which acts about the centre of mass, E ∨ (M ∧ X) = t (E ∨ (M_c ∧ (t̄* X t̄))) t* (body_inertia.hpp).
 // (body_acceleration runs the typed acceleration(body, …), with N by its ten parameters: the same
 // 24m 18a momentum.)
 struct general {
@@ -241,7 +244,7 @@ template <class S, class K, class T, class... W>
     if constexpr (std::is_same_v<K, inertia_kind::general>) {
         // 24 + 36 blades make one program longer than expr::inline_terms, which would run as a
         // loop (program.hpp); the typed acceleration stages P and the right-hand side as inlined
-        // programs and solves about the centre of mass (body.Mb, inertia.hpp): 66m, not 78m.
+        // programs and solves about the centre of mass (body.Mb, body_inertia.hpp): 66m, not 78m.
         if constexpr (sizeof...(W) == 0) return ctga::acceleration(body, s, ctga::wrench<T>{});
         else return ctga::acceleration(body, s, ctga::wrench<T>(applied...));
     } else return std::apply(

@@ -34,7 +34,7 @@
 #include "ctga/integrators/model.hpp"
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/mechanics/linear3.hpp"
-#include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/coscrew.hpp"
 
 namespace ctga {
 

@@ -1,5 +1,5 @@
 // ctga::uninitialized: storage every element of which is written before it is read, such as the
-// per-body values of a kinematic tree's passes (chains/algorithms.hpp: each body's velocity is
+// per-body values of a kinematic tree's passes (chains/passes.hpp: each body's velocity is
 // set from its parent's before any child reads it). A multivector is zero when default
 // constructed; constructed from this tag it is left as it is, so that an array of them costs
 // no clearing (for the 7-body arm's RNEA that clearing was 2 KB of stores per call).

@@ -1,0 +1,144 @@
+// Forward dynamics q̈(q, q̇, τ) of a kinematic tree: the articulated body algorithm
+// (Featherstone (2008) §7.3), with the articulated inertias as articulated_inertia
+// (mechanics/articulated_inertia.hpp).
+//
+// Three passes (Featherstone Table 7.1), in body coordinates:
+//   out:  v_i = X_i⁻¹ v_λ + S_i q̇_i,  c_i = v_i × S_i q̇_i,  N^A_i = N_i,  p^A_i = v_i ×* (N_i v_i) − f_ext,i
+//   in:   U_i = N^A_i S_i,  D_i = U_i(S_i),  u_i = τ_i − p^A_i(S_i), and the parent receives
+//         N^A_λ += X_i (N^A_i − U_i U_iᵀ/D_i),  p^A_λ += X_i (p^a_i),
+//         p^a_i = p^A_i + N^a_i c_i + U_i u_i/D_i
+//   out:  a'_i = X_i⁻¹ a_λ + c_i,  q̈_i = (u_i − U_i(a'_i))/D_i,  a_i = a'_i + S_i q̈_i
+// N^A is an articulated_inertia (21 entries, moved by (g ḡ) N (g ḡ)*); U = N^A S, the pairings
+// and N^a c are the engine's formulas, so an axis joint's S (one blade) takes one column of N^A
+// and one component of each co-screw, and c = v × S q̇ has the bracket's four non-zero blades.
+// A floating joint (S = 1): q̈ = (N^A)⁻¹(τ − p^A) − a' and the parent receives no inertia and
+// the force τ (N^a = N^A − N^A (N^A)⁻¹ N^A = 0, p^a = p^A + (τ − p^A)).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <utility>
+
+#include "ctga/chains/passes.hpp"
+#include "ctga/chains/tree.hpp"
+#include "ctga/mechanics/articulated_inertia.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/momentum.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/operations/evaluate.hpp"
+#include "ctga/support/uninitialized.hpp"
+
+namespace ctga::chains {
+
+namespace algorithm_detail {
+// The screw component an axis joint's S lies on, 6 for any other joint.
+template <class J>
+constexpr std::size_t null_component() {
+    if constexpr (requires { J::component; }) return J::component;
+    else return 6;
+}
+template <class Tree, class T>
+constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
+                                    const joint_vector<Tree, T>& tau, const body_wrenches<Tree, T>* f_ext) noexcept {
+    kinematics<Tree, T> k{uninitialized};
+    forward_pass<pass::velocities, false>(k, m, q, qd.data(), static_cast<const T*>(nullptr), vec3<T>{});
+    // N^A_i = N_i, p^A_i = v_i ×* (N_i v_i) − f_ext,i: each array built element by element
+    std::array<articulated_inertia<T>, Tree::size> NA = [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<articulated_inertia<T>, Tree::size>{articulated_inertia_of(m.template link<I>().inertia)...};
+    }(std::make_index_sequence<Tree::size>{});
+    std::array<coscrew<T>, Tree::size> pA = [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<coscrew<T>, Tree::size>{coscrew<T>(coadjoint(k.v[I], momentum(m.template link<I>().inertia, k.v[I])))...};
+    }(std::make_index_sequence<Tree::size>{});
+    if (f_ext)
+        for (std::size_t i = 0; i < Tree::size; ++i) pA[i] = pA[i] - (*f_ext)[i];
+    // c_i = v_i × S_i q̇_i in the bracket's own sparse type: four blades for an axis joint (nv = 1, 6 only)
+    const auto bias = [&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        using J = typename Tree::template joint_at<i>;
+        return eval(bracket.formula(k.v[i], joint_screw<J>(m.template link<i>().joint, qd.data() + Tree::v_offset[i])));
+    };
+    // written for the 1-dof joints, read for them only
+    auto U = uninitialized_array<coscrew<T>, Tree::size>();  // N^A S
+    std::array<T, Tree::size> D_inverse;                     // 1 / U(S)
+    std::array<T, Tree::size> u;                             // τ − p^A(S)
+    backward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        using J = typename Tree::template joint_at<i>;
+        const auto& L = m.template link<i>();
+        if constexpr (J::nv == 1) {
+            const auto S = J::template subspace<0, T>(L.joint);
+            U[i] = momentum(NA[i], S);
+            D_inverse[i] = T(1) / evaluation(U[i], S);
+            u[i] = tau[Tree::v_offset[i]] - evaluation(pA[i], S);
+            if constexpr (p >= 0) {
+                // an axis joint's S is one screw component: N^a has a zero row and column there
+                constexpr std::size_t null = null_component<J>();
+                const articulated_inertia<T> Na = minus_joint<null>(NA[i], U[i], D_inverse[i]);
+                const coscrew<T> pa = pA[i] + momentum(Na, bias(body)) + U[i] * (u[i] * D_inverse[i]);
+                NA[p] = NA[p] + transform<null>(k.X[i], Na);
+                pA[p] = pA[p] + transform(k.X[i], pa);
+            }
+        } else if constexpr (J::nv == 0) {
+            if constexpr (p >= 0) {
+                NA[p] = NA[p] + transform(k.X[i], NA[i]);
+                pA[p] = pA[p] + transform(k.X[i], pA[i]);
+            }
+        } else {
+            static_assert(J::nv == 6, "ctga::chains::aba: a joint has 0, 1 or 6 degrees of freedom");
+            if constexpr (p >= 0) {
+                constexpr std::size_t o = Tree::v_offset[i];
+                const coscrew<T> tau_i{tau[o], tau[o + 1], tau[o + 2], tau[o + 3], tau[o + 4], tau[o + 5]};
+                pA[p] = pA[p] + transform(k.X[i], tau_i);
+            }
+        }
+    });
+    joint_vector<Tree, T> qdd;  // every number written
+    auto a = uninitialized_array<screw<T>, Tree::size>();
+    const vec3<T> a_world = minus(m.gravity);
+    forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        constexpr std::size_t o = Tree::v_offset[i];
+        using J = typename Tree::template joint_at<i>;
+        const auto& L = m.template link<i>();
+        screw<T> a_parent;  // X_i⁻¹ a_λ
+        if constexpr (p < 0) a_parent = world_acceleration(k.X[i], a_world);
+        else a_parent = transform_inverse(k.X[i], a[p]);
+        if constexpr (J::nv == 0) {
+            a[i] = a_parent;
+        } else if constexpr (J::nv == 1) {
+            const screw<T> a1 = a_parent + bias(body);
+            qdd[o] = (u[i] - evaluation(U[i], a1)) * D_inverse[i];
+            a[i] = a1 + J::template subspace<0, T>(L.joint) * qdd[o];
+        } else {
+            const coscrew<T> tau_i{tau[o], tau[o + 1], tau[o + 2], tau[o + 3], tau[o + 4], tau[o + 5]};
+            a[i] = solve(NA[i], coscrew<T>(tau_i - pA[i]));
+            const screw<T> d = a[i] - (a_parent + bias(body));
+            for (std::size_t r = 0; r < 6; ++r) qdd[o + r] = d[r];
+        }
+    });
+    return qdd;
+}
+}  // namespace algorithm_detail
+
+struct aba_t {
+    // q̈ = FD(q, q̇, τ): the joint accelerations the forces τ give under gravity.
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_vector<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                      const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau) const noexcept {
+        return algorithm_detail::aba(m, q, qd, tau, static_cast<const body_wrenches<Tree, T>*>(nullptr));
+    }
+    // … with an external wrench acting on each body (body frame, about the body's origin).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_vector<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                      const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
+                                                      const body_wrenches<Tree, T>& f_ext) const noexcept {
+        return algorithm_detail::aba(m, q, qd, tau, &f_ext);
+    }
+};
+inline constexpr aba_t aba{};
+
+}  // namespace ctga::chains

@@ -1,0 +1,88 @@
+// The joint-space mass matrix H(q) of a kinematic tree: the composite rigid body algorithm
+// (Featherstone (2008) §6.2), with each body's N by its ten parameters (body_inertia).
+//
+// N^c_i = N_i + Σ_children X_c N^c_c (the composite of body i and everything it carries, moved
+// into i's frame: transform(X, body_inertia), 54m 50a). Column (i, k) of H: F = N^c_i S_ik, then
+// H(j, l) = F(S_jl) for body i's own dofs and, moving F out through X_i, X_λ(i), …, each ancestor j.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <utility>
+
+#include "ctga/chains/passes.hpp"
+#include "ctga/chains/tree.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/inertia_transform.hpp"
+#include "ctga/mechanics/momentum.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/support/inline.hpp"
+
+namespace ctga::chains {
+
+template <class Tree, class T = double>
+using joint_matrix = std::array<std::array<T, Tree::nv>, Tree::nv>;  // H, row-major
+
+namespace algorithm_detail {
+// H(j, ·) = F(S_j) for body j's dofs.
+template <std::size_t J, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void fill_rows(const model<Tree, T>& m, joint_matrix<Tree, T>& H, std::size_t col,
+                                            const coscrew<T>& F) noexcept {
+    using Jt = typename Tree::template joint_at<J>;
+    [&]<std::size_t... L>(std::index_sequence<L...>) {
+        ((H[Tree::v_offset[J] + L][col] = H[col][Tree::v_offset[J] + L] =
+              evaluation(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
+         ...);
+    }(std::make_index_sequence<Jt::nv>{});
+}
+// F moved out of body `Child` into its parent's frame, and the parent's entries filled; then on up.
+template <std::size_t Child, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void fill_ancestors(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
+                                                 joint_matrix<Tree, T>& H, std::size_t col, const coscrew<T>& F) noexcept {
+    constexpr int p = Tree::parent[Child];
+    if constexpr (p >= 0) {
+        const coscrew<T> Fp = transform(X[Child], F);
+        if constexpr (Tree::template joint_at<static_cast<std::size_t>(p)>::nv > 0) fill_rows<static_cast<std::size_t>(p)>(m, H, col, Fp);
+        fill_ancestors<static_cast<std::size_t>(p)>(m, X, H, col, Fp);
+    }
+}
+// Column K of body I's dofs, from F = N^c_I S_IK.
+template <std::size_t I, std::size_t K, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void crba_column(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
+                                              joint_matrix<Tree, T>& H, const coscrew<T>& F) noexcept {
+    const std::size_t col = Tree::v_offset[I] + K;
+    fill_rows<I>(m, H, col, F);
+    fill_ancestors<I>(m, X, H, col, F);
+}
+}  // namespace algorithm_detail
+
+struct crba_t {
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q) const noexcept {
+        using namespace algorithm_detail;
+        std::array<motor_map<T>, Tree::size> X;
+        forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
+        std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return std::array<body_inertia<T>, Tree::size>{m.template link<I>().inertia...};
+        }(std::make_index_sequence<Tree::size>{});
+        backward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            constexpr int p = Tree::parent[i];
+            if constexpr (p >= 0) Nc[p] = Nc[p] + transform(X[i], Nc[i]);
+        });
+        joint_matrix<Tree, T> H{};
+        forward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            using J = typename Tree::template joint_at<i>;
+            if constexpr (J::nv > 0)
+                [&]<std::size_t... K>(std::index_sequence<K...>) {
+                    (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
+                }(std::make_index_sequence<J::nv>{});
+        });
+        return H;
+    }
+};
+inline constexpr crba_t crba{};
+
+}  // namespace ctga::chains

@@ -1,0 +1,166 @@
+// What the algorithms of a kinematic tree (tree.hpp; algorithms.hpp lists them) share: the
+// numbers they read and return (configuration, joint vectors, external wrenches), every body's
+// frame, velocity and acceleration (kinematics), and the forward pass that computes them
+// (Featherstone (2008) §4.1, §5.3). Screws for velocities and accelerations (§3), co-screws for
+// forces (§5), motor maps for the frames (motor.hpp).
+//
+// Everything is in body coordinates: body i's velocity v_i and acceleration a_i are screws in
+// its own frame, X_i is the motor map of body i in its parent's frame (placement ∘ joint motion).
+// The forward pass, with × the Lie bracket of §3:
+//
+//   v_i = X_i⁻¹ v_λ + S_i q̇_i
+//   a_i = X_i⁻¹ a_λ + S_i q̈_i + v_i × S_i q̇_i         (a of the world: −g, gravity's trick)
+//
+// A joint's S_i q̇_i and S_i are the joint's own sparse screws (joints.hpp): one blade for an
+// axis joint, so the bracket, the momentum of the mass matrix and the pairing are evaluated by
+// the engine on that blade only. The bodies are unrolled at compile time (a fold over their
+// indices), each with its own joint type, parent and ancestors.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include "ctga/chains/joints.hpp"
+#include "ctga/chains/tree.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/support/inline.hpp"
+#include "ctga/support/uninitialized.hpp"
+
+namespace ctga::chains {
+
+template <class Tree, class T = double>
+using configuration = std::array<T, Tree::nq>;  // q: the joints' numbers in body order
+template <class Tree, class T = double>
+using joint_vector = std::array<T, Tree::nv>;  // q̇, q̈, τ
+template <class Tree, class T = double>
+using body_wrenches = std::array<coscrew<T>, Tree::size>;  // external wrench on each body, body frame
+
+template <class Tree, class T = double>
+struct kinematics {
+    std::array<motor_map<T>, Tree::size> X;     // body i in its parent's frame
+    std::array<motor_map<T>, Tree::size> pose;  // body i in the world frame
+    std::array<screw<T>, Tree::size> v;         // velocity, body frame
+    std::array<screw<T>, Tree::size> a;         // acceleration (spatial, without gravity), body frame
+
+    // Zero.
+    constexpr kinematics() noexcept : X{}, pose{}, v{}, a{} {}
+    // Not cleared: for a pass that writes every body's numbers it reads (support/uninitialized.hpp).
+    constexpr explicit kinematics(uninitialized_t) noexcept
+        : v(uninitialized_array<screw<T>, Tree::size>()), a(uninitialized_array<screw<T>, Tree::size>()) {}
+};
+
+namespace algorithm_detail {
+
+// f(std::integral_constant<std::size_t, I>) for I = 0 … N−1, or N−1 … 0.
+template <std::size_t N, class F>
+CTGA_ALWAYS_INLINE constexpr void forward(F&& f) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) { (f(std::integral_constant<std::size_t, I>{}), ...); }(
+        std::make_index_sequence<N>{});
+}
+template <std::size_t N, class F>
+CTGA_ALWAYS_INLINE constexpr void backward(F&& f) {
+    [&]<std::size_t... I>(std::index_sequence<I...>) { (f(std::integral_constant<std::size_t, N - 1 - I>{}), ...); }(
+        std::make_index_sequence<N>{});
+}
+
+// S q̇ of a joint: Σ_k S_k q̇_k, in the joint's own screw type (one blade for an axis joint).
+template <class J, class P, class T>
+CTGA_ALWAYS_INLINE constexpr auto joint_screw(const P& params, const T* x) noexcept {
+    if constexpr (J::nv == 1) return typename J::template subspace_type<T>{J::template subspace<0, T>(params) * x[0]};
+    else if constexpr (J::nv == 6) return screw<T>{x[0], x[1], x[2], x[3], x[4], x[5]};
+    else static_assert(J::nv == 1 || J::nv == 6, "ctga::chains: a joint has 1 or 6 degrees of freedom (or 0: fixed)");
+}
+
+// Body I's map in its parent's frame.
+template <std::size_t I, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr motor_map<T> joint_map(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+    using J = typename Tree::template joint_at<I>;
+    const auto& L = m.template link<I>();
+    return J::motion(L.placement, L.joint, q.data() + Tree::q_offset[I]);
+}
+
+// The world's acceleration in Featherstone's gravity trick (§5.3) is a pure translation, −g (or 0
+// for the true accelerations of forward kinematics): seen from a body on the world with map X
+// it is (0, Rᵀ(−g)) (X⁻¹ (0, a) = (Rᵀ 0, Rᵀ(a − t × 0))), 9m 6a instead of a screw's 24m 18a.
+template <class T>
+CTGA_ALWAYS_INLINE constexpr screw<T> world_acceleration(const motor_map<T>& X, const vec3<T>& a) noexcept {
+    const vec3<T> r = linear3::apply_transposed(X.R, a);
+    return screw<T>{T(0), T(0), T(0), r[0], r[1], r[2]};
+}
+template <class T>
+constexpr vec3<T> minus(const vec3<T>& g) noexcept {
+    return {-g[0], -g[1], -g[2]};
+}
+
+enum class pass { poses, velocities, accelerations };
+
+// The number of ancestors of body i (0 for a body on the world).
+template <class Tree>
+constexpr std::size_t depth_of(std::size_t i) {
+    std::size_t d = 0;
+    for (int k = Tree::parent[i]; k >= 0; k = Tree::parent[static_cast<std::size_t>(k)]) ++d;
+    return d;
+}
+
+// The forward pass of §4.1/§5.3 into k: maps, world poses (when Poses), velocities and
+// accelerations (as asked), then then(body, k) while the body's numbers are at hand (RNEA's
+// forces; the body's map k.X[i] is stored only after it). RNEA and ABA need no world poses:
+// only each body's map in its parent. Every number asked for is written before it is read, so
+// k may start uninitialized.
+struct no_body_work {
+    template <class B, class K>
+    constexpr void operator()(B, const K&) const noexcept {}
+};
+template <pass What, bool Poses, class Tree, class T, class Then = no_body_work>
+constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
+                            const T* qdd, const vec3<T>& a_world, Then&& then = {}) noexcept {
+    forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        using J = typename Tree::template joint_at<i>;
+        const auto& L = m.template link<i>();
+        const motor_map<T> X = joint_map<i>(m, q);  // used from here, stored in k.X after the body's work
+        if constexpr (!Poses) {
+        } else if constexpr (p < 0) {
+            k.pose[i] = X;
+        } else {
+            const motor_map<T>& W = k.pose[p];
+            k.pose[i] = {joint_detail::multiply(W.R, X.R), linear3::add(linear3::apply(W.R, X.t), W.t)};
+        }
+        if constexpr (What != pass::poses) {
+            constexpr std::size_t o = Tree::v_offset[i];
+            if constexpr (J::nv == 0) {
+                if constexpr (p < 0) {
+                    k.v[i] = screw<T>{};
+                    if constexpr (What == pass::accelerations) k.a[i] = world_acceleration(X, a_world);
+                } else {
+                    k.v[i] = transform_inverse(X, k.v[p]);
+                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, k.a[p]);
+                }
+            } else {
+                const auto vJ = joint_screw<J>(L.joint, qd + o);
+                if constexpr (p < 0) {
+                    k.v[i] = vJ;  // the world does not move
+                    if constexpr (What == pass::accelerations)
+                        k.a[i] = world_acceleration(X, a_world) + joint_screw<J>(L.joint, qdd + o);
+                } else {
+                    k.v[i] = transform_inverse(X, k.v[p]) + vJ;
+                    if constexpr (What == pass::accelerations)
+                        k.a[i] = transform_inverse(X, k.a[p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
+                }
+            }
+        }
+        then(body, k);
+        // last: a copy of X read while its parts still sit in the store buffer stalls store forwarding
+        k.X[i] = X;
+    });
+}
+
+}  // namespace algorithm_detail
+
+}  // namespace ctga::chains

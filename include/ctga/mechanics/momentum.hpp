@@ -1,0 +1,73 @@
+// The operations of an inertia (paper §5–6): the momentum P = A ∨ (N ∧ s), the kinetic energy,
+// dN/dt of a moving body and the velocity a mobility gives a co-screw, s = E ∨ (M ∧ P).
+//
+// N is any inertia element (inertia.hpp; body_inertia passes its ten parameters, body_inertia.hpp),
+// s a screw of Cl(0,3,1) or lifted, P a co-screw, M a mobility.
+#pragma once
+
+#include <type_traits>
+
+#include "ctga/mechanics/algebras.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/inertia.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/operations/formula.hpp"
+#include "ctga/support/inline.hpp"
+
+namespace ctga {
+
+// §5: the momentum P = A ∨ (N ∧ s); 24m 18a for a rigid body's N.
+inline constexpr operation momentum{formula([](auto N, auto s) { return invariants::A & (N ^ lift(s)); }),
+                                    into<coscrew>};
+
+// §5: the kinetic energy E_k = ½ s̄ ∨ (N ∧ s) (the formula is twice it).
+inline constexpr operation kinetic_energy{formula([](auto N, auto s) { return bar(lift(s)) & (N ^ lift(s)); }),
+                                          scalar_over<2>};
+
+// §6: dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄) for a body moving with velocity s.
+inline constexpr operation inertia_rate{formula([](auto N, auto s) {
+                                            const auto x = lift(s);
+                                            return half * (x * N - N * x) + half * (bar(x) * N - N * bar(x));
+                                        }),
+                                        into<inertia>};
+
+// The velocity a mobility gives a co-screw: s = E ∨ (M ∧ P), a screw of Cl(0,3,1).
+struct lowered_screw_t {
+    template <class E>
+    [[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<typename E::scalar_type> operator()(const E& e) const noexcept {
+        return lower(lifted_screw<typename E::scalar_type>(e));
+    }
+};
+namespace inertia_detail {
+inline constexpr auto velocity_formula = [](auto M, auto P) { return invariants::E & (M ^ P); };
+using velocity_operation = operation<std::remove_const_t<decltype(velocity_formula)>, lowered_screw_t>;
+}  // namespace inertia_detail
+// velocity(M, P) for any mobility element; a body_mobility and a co-screw take the form about the
+// centre of mass, t (E ∨ (M_c ∧ (t̄* P t̄))) t* (body_mobility), the same s at 24m 18a. The lazy
+// velocity.formula is E ∨ (M ∧ P) for every M.
+struct velocity_t : inertia_detail::velocity_operation {
+    using inertia_detail::velocity_operation::operator();
+    // A rigid body's mobility by its ten parameters: t (E ∨ (M_c ∧ (t̄* P t̄))) t* (body_mobility)
+    // in coordinates, P = (l, p): l' = l − c × p (P about the centre of mass), ω = J l', v' = p/m
+    // (M_c), v = v' + c × ω (back by t). The same 24m 18a as body_mobility::velocity, whose
+    // symbolic normal form (eleven arguments, three sandwiches) costs a translation unit about
+    // 1.3 s and 150 MB to compile: the formula stays for larger formulas (the scenes' body
+    // kinds), this call is the one the equations of motion make. tests/body_mobility_test.cpp
+    // checks both against the 36 blades and against Gaussian elimination on §2's 6×6 N.
+    template <class T>
+    [[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> operator()(const body_mobility<T>& M, const coscrew<T>& P) const noexcept {
+        const vec3<T> c{M.cx[0], M.cy[0], M.cz[0]}, p{P[3], P[4], P[5]};
+        const vec3<T> cp = linear3::cross(c, p);
+        const vec3<T> l{P[0] - cp[0], P[1] - cp[1], P[2] - cp[2]};
+        const vec3<T> w{M.jxx[0] * l[0] + M.jxy[0] * l[1] + M.jxz[0] * l[2], M.jxy[0] * l[0] + M.jyy[0] * l[1] + M.jyz[0] * l[2],
+                        M.jxz[0] * l[0] + M.jyz[0] * l[1] + M.jzz[0] * l[2]};
+        const vec3<T> cw = linear3::cross(c, w);
+        const T inv_m = M.inv_m[0];
+        return screw<T>{w[0], w[1], w[2], inv_m * p[0] + cw[0], inv_m * p[1] + cw[1], inv_m * p[2] + cw[2]};
+    }
+};
+inline constexpr velocity_t velocity{{formula(inertia_detail::velocity_formula), lowered_screw_t{}}};
+
+}  // namespace ctga

@@ -38,7 +38,7 @@ constexpr std::array<double, 3> start{1, 2, 3};         // position at t = 0 (R(
 constexpr double t_end = 20;
 
 mass_properties<double> the_body() { return *make_principal_mass_properties(1.0, principal[0], principal[1], principal[2]); }
-motor<double> start_pose() { return rigid_motion(translation(start[0], start[1], start[2]), rotor<double>{1, 0, 0, 0}); }
+motor<double> start_pose() { return rigid_motion(make_translator(start[0], start[1], start[2]), rotor<double>{1, 0, 0, 0}); }
 screw<double> start_velocity_body() {
     return screw<double>{m0[0] / principal[0], m0[1] / principal[1], m0[2] / principal[2],
                          com_velocity[0],      com_velocity[1],      com_velocity[2]};
@@ -305,7 +305,7 @@ void far_from_origin(const std::string& dir) {
     std::fprintf(f, "distance,paper_error,about_body_error\n");
     for (int k = 0; k <= 24; ++k) {
         const double d = std::pow(10.0, k / 4.0);
-        const motor<double> g = rigid_motion(translation(0.6 * d, -0.48 * d, 0.64 * d), rotation(1.0 / 3, 2.0 / 3, 2.0 / 3, 0.7));
+        const motor<double> g = rigid_motion(make_translator(0.6 * d, -0.48 * d, 0.64 * d), make_rotor(0.7, 1.0 / 3, 2.0 / 3, 2.0 / 3));
         const motor_map<double> G = map_of(g);
         const screw<double> s = transform(G, s_b);
         const wrench<double> W = transform(G, W_b);

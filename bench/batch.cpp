@@ -39,7 +39,7 @@ state_t<S> random_state(std::mt19937_64& rng) {
     ax /= len, ay /= len, az /= len;
     double tx = 2 * u(rng), ty = 2 * u(rng), tz = 2 * u(rng);
     if constexpr (std::is_same_v<S, sub::planar>) ax = ay = 0, az = 1, tz = 0;
-    const ctga::motor<double> g = ctga::rigid_motion(ctga::translation(tx, ty, tz), ctga::rotation(ax, ay, az, 3.1 * u(rng)));
+    const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(tx, ty, tz), ctga::make_rotor(3.1 * u(rng), ax, ay, az));
     const ctga::screw<double> s{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)};
     return {ctga::project<typename S::template motor_type<double>>(g), ctga::project<typename S::template screw_type<double>>(s)};
 }

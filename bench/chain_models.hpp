@@ -149,7 +149,7 @@ ch::model<Tree> ctga_model(const description<N>& d) {
             using J = typename Tree::template joint_at<I>;
             const body_description& b = d[I];
             if (Tree::parent[I] != b.parent || kind_of<J>() != b.kind) throw std::logic_error("chain_models: tree type and description differ");
-            const auto link = ch::make_link<J>(ctga::motor<double>(ctga::translation(b.t[0], b.t[1], b.t[2])),
+            const auto link = ch::make_link<J>(ctga::motor<double>(ctga::make_translator(b.t[0], b.t[1], b.t[2])),
                                                ctga::make_mass_properties(b.mass, ctga::vec3<double>{b.com[0], b.com[1], b.com[2]}, b.Ic));
             if (!link) throw std::logic_error(ctga::describe(link.error));
             m.template link<I>() = *link;
@@ -199,7 +199,7 @@ std::array<state<Tree>, 64> random_states(std::uint64_t seed) {
                 const double n = std::sqrt(ax[0] * ax[0] + ax[1] * ax[1] + ax[2] * ax[2]);
                 const double th = 2 * u(rng), x = u(rng), y = u(rng), z = 0.5 + 0.2 * u(rng);
                 const ctga::motor<double> g =
-                    ctga::rigid_motion(ctga::translation(x, y, z), ctga::rotation(ax[0] / n, ax[1] / n, ax[2] / n, th));
+                    ctga::rigid_motion(ctga::make_translator(x, y, z), ctga::make_rotor(th, ax[0] / n, ax[1] / n, ax[2] / n));
                 for (std::size_t k = 0; k < 8; ++k) s.q[o + k] = g[k];
                 const double w = std::cos(th / 2), sh = std::sin(th / 2);
                 const double qs7[7] = {x, y, z, w, sh * ax[0] / n, sh * ax[1] / n, sh * ax[2] / n};

@@ -37,8 +37,8 @@ input_batches make_inputs(std::size_t n, unsigned seed) {
     };
     const auto pose = [&] {
         const auto a = unit();
-        return ctga::motor<>(ctga::rigid_motion(ctga::translation(2 * u(rng), 2 * u(rng), 2 * u(rng)),
-                                                ctga::rotation(a[0], a[1], a[2], 3 * u(rng))));
+        return ctga::motor<>(ctga::rigid_motion(ctga::make_translator(2 * u(rng), 2 * u(rng), 2 * u(rng)),
+                                                ctga::make_rotor(3 * u(rng), a[0], a[1], a[2])));
     };
     const auto screw = [&] { return ctga::screw<>{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)}; };
     const auto coscrew = [&] { return ctga::coscrew<>{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)}; };
@@ -60,13 +60,13 @@ input_batches make_inputs(std::size_t n, unsigned seed) {
         const ctga::coscrew<> P = coscrew(), W = coscrew();
         const ctga::motor_map<> G = ctga::map_of(g);
 
-        out.ctga.push_back({*body, ctga::body_inertia_of(body->mass), g, g2, G, s, s2, P, W});
+        out.ctga.push_back({*body, ctga::body_inertia_of(body->properties), g, g2, G, s, s2, P, W});
 
-        const ctga::mat3<double> J = ctga::linear3::inverse_symmetric(body->mass.inertia_c);
+        const ctga::mat3<double> J = ctga::linear3::inverse_symmetric(body->properties.inertia_c);
         spatial::se3 X{{v3(G.R[0][0], G.R[0][1], G.R[0][2]), v3(G.R[1][0], G.R[1][1], G.R[1][2]),
                         v3(G.R[2][0], G.R[2][1], G.R[2][2])},
                        v3(G.t[0], G.t[1], G.t[2])};
-        out.spatial.push_back({{m, v3(com[0], com[1], com[2]), to_sym3(body->mass.inertia_c)},
+        out.spatial.push_back({{m, v3(com[0], com[1], com[2]), to_sym3(body->properties.inertia_c)},
                                {1 / m, v3(com[0], com[1], com[2]), to_sym3(J)},
                                to_spatial(g), to_spatial(g2), X, to_spatial(s), to_spatial(s2), to_spatial(P),
                                to_spatial(W)});

@@ -12,8 +12,8 @@ const dense_mv E = dense_mv::blade("e1e2e3e");
 dense_mv commutator_half(const dense_mv& x, const dense_mv& y) { return 0.5 * (gp(x, y) - gp(y, x)); }
 dense_mv sandwich(const dense_mv& h, const dense_mv& x) { return gp(gp(h, x), conjugate(h)); }
 dense_mv acceleration(const dense_mv& N, const dense_mv& M, const dense_mv& s, const dense_mv& W) {
-    const dense_mv P = vee(A, wedge(N, s));
-    return vee(E, wedge(M, W - commutator_half(bar(s), P)));
+    const dense_mv P = shuffle(A, wedge(N, s));
+    return shuffle(E, wedge(M, W - commutator_half(bar(s), P)));
 }
 
 // the state's motor and screw as dense elements of Cl(0,6,2), and back (the e-half, §5)
@@ -31,8 +31,8 @@ void to_state(const dense_mv& m, state& x, std::size_t first) {
 }
 }  // namespace
 
-dense_mv momentum(const dense_inputs& in) { return vee(A, wedge(in.N, in.s)); }
-double energy(const dense_inputs& in) { return 0.5 * vee(bar(in.s), wedge(in.N, in.s))[0]; }
+dense_mv momentum(const dense_inputs& in) { return shuffle(A, wedge(in.N, in.s)); }
+double energy(const dense_inputs& in) { return 0.5 * shuffle(bar(in.s), wedge(in.N, in.s))[0]; }
 dense_mv bracket(const dense_inputs& in) { return commutator_half(in.s, in.s2); }
 dense_mv coadjoint(const dense_inputs& in) { return commutator_half(bar(in.s), in.P); }
 dense_mv motor_product(const dense_inputs& in) { return gp(in.g, in.g2); }

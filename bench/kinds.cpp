@@ -28,8 +28,8 @@ std::array<state_t<S>, 64> random_states() {
     for (auto& x : out) {
         const double ax = std::is_same_v<S, sub::planar> ? 0 : u(rng), ay = std::is_same_v<S, sub::planar> ? 0 : u(rng), az = 1;
         const double n = std::sqrt(ax * ax + ay * ay + az * az);
-        const ctga::motor<double> g = ctga::rigid_motion(ctga::translation(u(rng), u(rng), std::is_same_v<S, sub::planar> ? 0 : u(rng)),
-                                                       ctga::rotation(ax / n, ay / n, az / n, 3 * u(rng)));
+        const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(u(rng), u(rng), std::is_same_v<S, sub::planar> ? 0 : u(rng)),
+                                                       ctga::make_rotor(3 * u(rng), ax / n, ay / n, az / n));
         x = {ctga::project<typename S::template motor_type<double>>(g),
              ctga::project<typename S::template screw_type<double>>(ctga::screw<double>{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)})};
     }

@@ -70,7 +70,7 @@ int main() {
         worst = std::fmax(worst, std::fabs(E - E0) / std::fabs(E0));
         if (k % 500 == 0)
             std::printf("  %.1f  %10.6f  %10.6f  %10.6f   %.1e\n", 1e-3 * static_cast<double>(k), E,
-                        ch::kinetic_energy(arm, x.g.x, x.s.x), ch::potential_energy(arm, x.g.x), std::fabs(E - E0) / std::fabs(E0));
+                        ch::tree_kinetic_energy(arm, x.g.x, x.s.x), ch::tree_potential_energy(arm, x.g.x), std::fabs(E - E0) / std::fabs(E0));
     });
     if (!run) {
         std::printf("simulation stopped: %s\n", ctga::describe(run.error));

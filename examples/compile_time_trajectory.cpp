@@ -58,7 +58,7 @@ constexpr trajectory_result trajectory(const Method& method, double h, long long
     const model_type model{*made};
     // a rotor given by its numbers (ctga::rotation calls std::cos / std::sin): |α|² = 0.36 + 0.64
     const ctga::motor<double> g0 =
-        ctga::rigid_motion(ctga::translation(0.5, -1.0, 2.0), ctga::rotor<double>{0.6, 0.8 / 3, 1.6 / 3, 1.6 / 3});
+        ctga::rigid_motion(ctga::make_translator(0.5, -1.0, 2.0), ctga::rotor<double>{0.6, 0.8 / 3, 1.6 / 3, 1.6 / 3});
     const ctga::screw<double> s0{0.3, 1.0, -0.4, 0.2, -0.1, 0.5};  // body-frame (ω, v)
     const auto run = ctga::integrate(method, model, {g0, s0}, h, steps);
     return {run.state,

@@ -19,8 +19,8 @@ int main() {
 
     using state = cg::motion_state<cg::motor<double>, cg::screw<double>>;
     const auto x0 = world.initial_state(
-        state{cg::motor<double>(cg::translation(0.0, 0.0, 0.0)), cg::screw<double>{0.5, 2.0, 0.2, 0.0, 0.3, 0.0}},
-        state{cg::rigid_motion(cg::translation(0.6, 0.4, 0.7), cg::rotation(1.0, 0.0, 0.0, 0.5)),
+        state{cg::motor<double>(cg::make_translator(0.0, 0.0, 0.0)), cg::screw<double>{0.5, 2.0, 0.2, 0.0, 0.3, 0.0}},
+        state{cg::rigid_motion(cg::make_translator(0.6, 0.4, 0.7), cg::make_rotor(0.5, 1.0, 0.0, 0.0)),
               cg::screw<double>{3.0, -1.0, 8.0, 0.0, 0.0, -0.5}});
 
     const auto report = [&](double t, const auto& x) {

@@ -37,7 +37,7 @@ int main() {
     std::cout << "plane    = " << pga::join(p, q, x) << "\n";
     std::cout << "l ^ ez   = " << pga::normalized(pga::meet(l, ez)) << "\n";
 
-    // a rotor about a zero axis is reported (error_code::not_a_unit_axis), not made
+    // a rotor about a zero axis is reported (error_code::zero_direction), not made
     const auto bad = pga::make_rotor_checked(1.0, 0, 0, 0);
     std::printf("make_rotor_checked(1, 0, 0, 0) %s\n", bad ? "made a rotor" : "refused the zero axis");
     return bad ? 1 : 0;

@@ -21,11 +21,11 @@ int main() {
                    cg::spring_damper<1, 2>{{0, -0.1, 0}, {0, 0.1, 0}, 400.0, 0.5}),
         puck{{m, d}, cg::weight<planar>(m, gravity)}, puck{{m, d}, cg::weight<planar>(m, gravity)},
         puck{{m, d}, cg::weight<planar>(m, gravity)}, free_puck{{m, d}},
-        cg::static_body<double>{cg::motor<double>(cg::translation(1.0, -1.0, 0.0))});
+        cg::static_body<double>{cg::motor<double>(cg::make_translator(1.0, -1.0, 0.0))});
 
     using pose = puck::motor_type;
     using velocity = puck::screw_type;
-    const auto at = [](double x, double y) { return cg::project<pose>(cg::motor<double>(cg::translation(x, y, 0.0))); };
+    const auto at = [](double x, double y) { return cg::project<pose>(cg::motor<double>(cg::make_translator(x, y, 0.0))); };
     const auto x0 = world.initial_state(cg::motion_state<pose, velocity>{at(0.3, -0.25), velocity{0, 0, 0}},
                                         cg::motion_state<pose, velocity>{at(0.5, -0.5), velocity{0, 0, 0}},
                                         cg::motion_state<pose, velocity>{at(0.7, -0.75), velocity{2.0, 0, 0}},

@@ -55,7 +55,7 @@ int main() {
     }
     // start: trunk 0.5 m up, level, turning slowly; legs straight
     ch::configuration<robot> q0{};
-    const ctga::motor<double> trunk = ctga::rigid_motion(ctga::translation(0.0, 0.0, 0.5), ctga::rotation(0.0, 0.0, 1.0, 0.0));
+    const ctga::motor<double> trunk = ctga::rigid_motion(ctga::make_translator(0.0, 0.0, 0.5), ctga::make_rotor(0.0, 0.0, 0.0, 1.0));
     for (std::size_t k = 0; k < 8; ++k) q0[k] = trunk[k];
     ch::joint_vector<robot> qd0{};
     qd0[2] = 0.5;  // yaw rate of the trunk (body frame)

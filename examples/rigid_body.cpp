@@ -18,7 +18,7 @@ int main() {
     }
     const cg::rigid_body<> body = *checked;
 
-    const cg::motor<> g = cg::rigid_motion(cg::translation(1.0, 0.0, 0.5), cg::rotation(0.0, 0.0, 1.0, 0.3));
+    const cg::motor<> g = cg::rigid_motion(cg::make_translator(1.0, 0.0, 0.5), cg::make_rotor(0.3, 0.0, 0.0, 1.0));
     const cg::screw<> s{0.1, 2.0, 0.1, 0.0, 0.0, 0.0};  // body-frame velocity (ω, v): tumbling about y
 
     const cg::coscrew<> P = cg::momentum(body.N, s);       // P = A ∨ (N ∧ s)

@@ -41,7 +41,7 @@ motion_state<typename S::template motor_type<double>, typename S::template screw
     double tx = 2 * u(rng), ty = 2 * u(rng), tz = 2 * u(rng);
     screw<double> s{u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)};
     if constexpr (std::is_same_v<S, sub::planar>) ax = ay = 0, az = 1, tz = 0;
-    const motor<double> g = rigid_motion(translation(tx, ty, tz), rotation(ax, ay, az, angle));
+    const motor<double> g = rigid_motion(make_translator(tx, ty, tz), make_rotor(angle, ax, ay, az));
     return {project<typename S::template motor_type<double>>(g), project<typename S::template screw_type<double>>(s)};
 }
 

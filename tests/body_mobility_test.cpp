@@ -99,7 +99,7 @@ static_assert(cost_of<decltype(body_mobility<>::velocity(std::declval<const cosc
                                                          std::declval<const body_mobility<>::scalar&>())),
                       lifted_screw<>> == expr::cost{24, 18},
               "the velocity about the centre of mass: 24m 18a");
-static_assert(std::is_same_v<decltype(velocity(std::declval<const body_mobility<>&>(), std::declval<const coscrew<>&>())), screw<>>);
+static_assert(std::is_same_v<decltype(velocity_from(std::declval<const body_mobility<>&>(), std::declval<const coscrew<>&>())), screw<>>);
 
 TEST_CASE("body_mobility is the element M of mobility_of, M = (t tbar) M_c (t tbar)*", "[mechanics][inertia]") {
     // a box-like body whose inertia and centre of mass are exact in binary: the blades agree to rounding
@@ -145,10 +145,10 @@ TEST_CASE("acceleration about the centre of mass agrees with the general mobilit
 
         worst_blades = std::max(worst_blades, rel(to_mobility(body.Mb), body.M));
         // the velocity a co-screw gets: structured, 36 blades, E ∨ (M ∧ P) through the element, N⁻¹ P
-        const screw<double> v = velocity(body.Mb, P);
-        worst_velocity = std::max(worst_velocity, rel(v, velocity(body.M, P)));
+        const screw<double> v = velocity_from(body.Mb, P);
+        worst_velocity = std::max(worst_velocity, rel(v, velocity_from(body.M, P)));
         worst_velocity_6 = std::max(worst_velocity_6, rel(six(v), solve(N6, six(P))));
-        worst_formula = std::max(worst_formula, rel(v, lower(lifted_screw<double>(velocity.formula(body.Mb, P)))));
+        worst_formula = std::max(worst_formula, rel(v, lower(lifted_screw<double>(velocity_from.formula(body.Mb, P)))));
 
         // ṡ: structured, general, and N⁻¹ (W − {s, N s}) of §2
         const screw<double> sd = acceleration(body, s, W);

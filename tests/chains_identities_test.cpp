@@ -70,9 +70,13 @@ ch::model<Tree> make_model(std::uint64_t seed) {
             using J = typename Tree::template joint_at<I>;
             const double z = Tree::parent[I] < 0 ? 0.1 : 0.3;
             const ctga::motor<double> placement =
-                ctga::rigid_motion(ctga::translation(uniform(rng, -0.05, 0.05), uniform(rng, -0.05, 0.05), z),
-                                   ctga::rotation(1.0, 0.0, 0.0, uniform(rng, -0.3, 0.3)));
-            const auto link = ch::make_link<J>(placement, random_mass(rng), ctga::vec3<double>{0.0, 0.6, 0.8});
+                ctga::rigid_motion(ctga::make_translator(uniform(rng, -0.05, 0.05), uniform(rng, -0.05, 0.05), z),
+                                   ctga::make_rotor(uniform(rng, -0.3, 0.3), 1.0, 0.0, 0.0));
+            const auto mass = random_mass(rng);
+            const auto link = [&] {
+                if constexpr (ch::has_run_time_axis<J>) return ch::make_link<J>(placement, mass, ctga::vec3<double>{0.0, 0.6, 0.8});
+                else return ch::make_link<J>(placement, mass);
+            }();
             REQUIRE(link);
             m.template link<I>() = *link;
         }(), ...);
@@ -89,8 +93,8 @@ ch::configuration<Tree> random_q(std::mt19937_64& rng) {
             if constexpr (Tree::nq_of[I] == 8) {
                 const Eigen::Vector3d u = Eigen::Vector3d(uniform(rng, -1, 1), uniform(rng, -1, 1), 1).normalized();
                 const ctga::motor<double> g =
-                    ctga::rigid_motion(ctga::translation(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, 0, 1)),
-                                       ctga::rotation(u[0], u[1], u[2], uniform(rng, -3, 3)));
+                    ctga::rigid_motion(ctga::make_translator(uniform(rng, -1, 1), uniform(rng, -1, 1), uniform(rng, 0, 1)),
+                                       ctga::make_rotor(uniform(rng, -3, 3), u[0], u[1], u[2]));
                 for (std::size_t k = 0; k < 8; ++k) x[k] = g[k];
             } else if constexpr (Tree::nq_of[I] == 1) {
                 x[0] = uniform(rng, -2, 2);
@@ -149,7 +153,7 @@ void check_dynamics_identities(std::uint64_t seed) {
         double quad = 0;
         for (std::size_t r = 0; r < Tree::nv; ++r)
             for (std::size_t c = 0; c < Tree::nv; ++c) quad += 0.5 * qd[r] * H[r][c] * qd[c];
-        CHECK(std::abs(ch::kinetic_energy(m, q, qd) - quad) <= 1e-12 * std::max(1.0, quad));
+        CHECK(std::abs(ch::tree_kinetic_energy(m, q, qd) - quad) <= 1e-12 * std::max(1.0, quad));
     }
 }
 
@@ -212,7 +216,7 @@ TEST_CASE("chains: a pendulum's period matches 4 K(sin(θ₀/2)) / ω₀" CTGA_T
     const double mass = 1.3, l = 0.7, Ic = 0.02;
     ch::model<pendulum> m;
     const auto link = ch::make_link<ch::revolute_y>(
-        ctga::rigid_motion(ctga::translation(0.0, 0.0, 0.0), ctga::rotation(0.0, 0.0, 1.0, 0.0)),
+        ctga::rigid_motion(ctga::make_translator(0.0, 0.0, 0.0), ctga::make_rotor(0.0, 0.0, 0.0, 1.0)),
         ctga::make_mass_properties(mass, ctga::vec3<double>{0.0, 0.0, -l}, ctga::mat3<double>{{{Ic, 0.0, 0.0}, {0.0, Ic, 0.0}, {0.0, 0.0, Ic}}}));
     REQUIRE(link);
     m.link<0>() = *link;
@@ -290,7 +294,7 @@ TEST_CASE("chains: bad input is reported, never a silent NaN" CTGA_TEST_PART_NAM
                 CHECK(ch::checked_call(ch::crba, m, q1).error == ctga::error_code::non_finite);
                 qd1[i] = bad;
                 CHECK(ch::checked_call(ch::aba, m, q, qd1, tau).error == ctga::error_code::non_finite);
-                CHECK(ch::checked_call(ch::kinetic_energy, m, q, qd1).error == ctga::error_code::non_finite);
+                CHECK(ch::checked_call(ch::tree_kinetic_energy, m, q, qd1).error == ctga::error_code::non_finite);
                 tau1[i] = bad;
                 CHECK(ch::checked_call(ch::aba, m, q, qd, tau1).error == ctga::error_code::non_finite);
             }
@@ -313,7 +317,7 @@ TEST_CASE("chains: bad input is reported, never a silent NaN" CTGA_TEST_PART_NAM
         CHECK(ch::checked_call(ch::crba, ml, ql).error == ctga::error_code::not_a_motor);
     }
     SECTION("invalid inertias and axes, when the model is built") {
-        const ctga::motor<double> g = ctga::rigid_motion(ctga::translation(0.0, 0.0, 0.3), ctga::rotation(0.0, 0.0, 1.0, 0.0));
+        const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(0.0, 0.0, 0.3), ctga::make_rotor(0.0, 0.0, 0.0, 1.0));
         const auto ok = ctga::make_principal_mass_properties(1.0, 0.1, 0.1, 0.1);
         CHECK(ch::make_link<ch::revolute_z>(g, ok));
         CHECK(ch::make_link<ch::revolute_z>(g, ctga::make_principal_mass_properties(0.0, 0.1, 0.1, 0.1)).error ==
@@ -326,6 +330,30 @@ TEST_CASE("chains: bad input is reported, never a silent NaN" CTGA_TEST_PART_NAM
         CHECK(ch::make_link<ch::prismatic_along>(g, ok, ctga::vec3<double>{0.0, 0.0, 0.0}).error == ctga::error_code::not_a_unit_axis);
         CHECK(ch::make_link<ch::revolute_about>(g, ok, ctga::vec3<double>{nan, 0.0, 1.0}).error == ctga::error_code::non_finite);
         CHECK(ch::make_link<ch::revolute_z>(ctga::motor<double>{}, ok).error == ctga::error_code::not_a_motor);
+        // a placement far from a unit motor is refused, not renormalised into another motion: the
+        // rotor cos ½ + 5 sin ½ e1e2 (an axis (0, 0, 5) used as if unit) would have become a
+        // rotation by 2.44 rad
+        const ctga::motor<double> far{std::cos(0.5), 0.0, 0.0, 5 * std::sin(0.5), 0.0, 0.0, 0.0, 0.3};
+        CHECK(ch::make_link<ch::revolute_z>(far, ok).error == ctga::error_code::not_a_motor);
+        // rounding-sized drift is repaired: the link's frame is the motor's own rotation
+        ctga::motor<double> drifted = ctga::make_rotor(1.0, 0.0, 0.0, 1.0);
+        for (std::size_t k = 0; k < 4; ++k) drifted[k] *= 1 + 1e-12;
+        const auto repaired = ch::make_link<ch::revolute_z>(drifted, ok);
+        REQUIRE(repaired);
+        CHECK(std::abs(repaired->placement.R[0][0] - std::cos(1.0)) <= 1e-15);
+        CHECK(std::abs(repaired->placement.R[1][0] - std::sin(1.0)) <= 1e-15);
+    }
+    SECTION("a model edited after it was built: every number of it is checked") {
+        auto m1 = m;
+        m1.link<3>().inertia.ixy = ctga::cl062::mv<double, "1">{nan};
+        CHECK(ch::checked_call(ch::rnea, m1, q, qd, tau).error == ctga::error_code::non_finite);
+        auto m2 = m;
+        m2.link<5>().placement.t[1] = nan;
+        CHECK(ch::checked_call(ch::crba, m2, q).error == ctga::error_code::non_finite);
+        auto m3 = m;
+        m3.link<0>().inertia.m = ctga::cl062::mv<double, "1">{std::numeric_limits<double>::infinity()};
+        CHECK(ch::checked_call(ch::aba, m3, q, qd, tau).error == ctga::error_code::non_finite);
+        REQUIRE(ch::checked_call(ch::aba, m, q, qd, tau));
     }
     SECTION("a simulation started from a NaN state stops at once") {
         const ch::tree_motion<arm7> sim{m};

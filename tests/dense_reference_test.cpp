@@ -187,13 +187,13 @@ TEST_CASE("degenerate squares in Cl(0,3,1)", "[dense]") {
 
 TEST_CASE("shuffle product: the paper's two examples and basic facts", "[dense]") {
     // e1e2 ∨ e3e = det(e1, e2, e3, e) = 1 in Cl(0,3,1)
-    CHECK(dense::vee(B<cl031>("e1e2"), B<cl031>("e3e")) == S<cl031>(1.0));
+    CHECK(dense::shuffle(B<cl031>("e1e2"), B<cl031>("e3e")) == S<cl031>(1.0));
     // e3e ∨ e1e2 = det(e3, e, e1, e2) = +1 (an even permutation)
-    CHECK(dense::vee(B<cl031>("e3e"), B<cl031>("e1e2")) == S<cl031>(1.0));
+    CHECK(dense::shuffle(B<cl031>("e3e"), B<cl031>("e1e2")) == S<cl031>(1.0));
     // grades summing to less than n: zero
-    CHECK(dense::vee(B<cl031>("e1"), B<cl031>("e2e3")) == mv<cl031>{});
+    CHECK(dense::shuffle(B<cl031>("e1"), B<cl031>("e2e3")) == mv<cl031>{});
     // a1a2a3a ∨ a3a1e1e2e3e = a3a1 (= -a1a3) in Cl(0,6,2)
-    const auto r = dense::vee(B<cl062>("a1a2a3a"), B<cl062>("a3a1e1e2e3e"));
+    const auto r = dense::shuffle(B<cl062>("a1a2a3a"), B<cl062>("a3a1e1e2e3e"));
     CHECK(r == B<cl062>("a3a1"));
     CHECK(r[0b0101u] == -1.0);
     // the pseudoscalar I = a1...e (= AE) is the unit of ∨ on both sides, for every basis blade
@@ -203,8 +203,8 @@ TEST_CASE("shuffle product: the paper's two examples and basic facts", "[dense]"
     for (blade_mask m = 0; m < cl062::blade_count; ++m) {
         mv<cl062> c;
         c[m] = 3.0;
-        CHECK(dense::vee(I, c) == c);
-        CHECK(dense::vee(c, I) == c);
+        CHECK(dense::shuffle(I, c) == c);
+        CHECK(dense::shuffle(c, I) == c);
     }
 }
 
@@ -225,23 +225,23 @@ TEST_CASE("Cl(0,6,2) identities 2-6 of the paper with concrete numbers", "[dense
 
     // 3. P ∨ (Q0 ∧ s) = (P ∧ Q0) ∨ s = ω·l + v·p
     const double pairing = dot(w, l) + dot(v, p);
-    CHECK(dense::vee(P, q0s) == S<cl062>(pairing));
-    CHECK(dense::vee(dense::wedge(P, Q0()), s) == S<cl062>(pairing));
+    CHECK(dense::shuffle(P, q0s) == S<cl062>(pairing));
+    CHECK(dense::shuffle(dense::wedge(P, Q0()), s) == S<cl062>(pairing));
 
     // 4. A ∨ (Q0 ∧ s) = s̄, and Ā = E
     const auto A = B<cl062>("a1a2a3a"), E = B<cl062>("e1e2e3e");
-    CHECK(dense::vee(A, q0s) == dense::bar(s));
-    CHECK(dense::vee(A, q0s) == sbar_e);
+    CHECK(dense::shuffle(A, q0s) == dense::bar(s));
+    CHECK(dense::shuffle(A, q0s) == sbar_e);
     CHECK(dense::bar(A) == E);
 
     // 5. A ∨ (N ∧ s) = m vx a2a3 + m vy a3a1 + m vz a1a2 + dx ωx a1a + dy ωy a2a + dz ωz a3a
     const auto N = diagonal_inertia(d, m);
-    const auto momentum = dense::vee(A, dense::wedge(N, s));
+    const auto momentum = dense::shuffle(A, dense::wedge(N, s));
     CHECK(momentum == coscrew({d.x * w.x, d.y * w.y, d.z * w.z}, {m * v.x, m * v.y, m * v.z}));
 
     // 6. s̄ ∨ (N ∧ s) = 2 E_k = dx ωx² + dy ωy² + dz ωz² + m |v|²
     const double two_ek = d.x * w.x * w.x + d.y * w.y * w.y + d.z * w.z * w.z + m * dot(v, v);
-    CHECK(dense::vee(dense::bar(s), dense::wedge(N, s)) == S<cl062>(two_ek));
+    CHECK(dense::shuffle(dense::bar(s), dense::wedge(N, s)) == S<cl062>(two_ek));
 }
 
 TEST_CASE("Cl(0,6,2) identities 9-10 of the paper (co-adjoint action)", "[dense]") {
@@ -259,8 +259,8 @@ TEST_CASE("Cl(0,6,2) identities 9-10 of the paper (co-adjoint action)", "[dense]
     const auto N = diagonal_inertia(d, m);
     const auto A = B<cl062>("a1a2a3a");
     CHECK(dense::wedge(dense::gp(s, N) - dense::gp(N, s), s) == mv<cl062>{});
-    const auto lhs = 0.5 * dense::vee(A, dense::wedge(dense::gp(sbar, N) - dense::gp(N, sbar), s));
-    CHECK(lhs == bracket(dense::vee(A, dense::wedge(N, s))));
+    const auto lhs = 0.5 * dense::shuffle(A, dense::wedge(dense::gp(sbar, N) - dense::gp(N, sbar), s));
+    CHECK(lhs == bracket(dense::shuffle(A, dense::wedge(N, s))));
 }
 
 TEST_CASE("Cl(0,3,1) screws: Lie bracket, rotor and translator actions", "[dense]") {
@@ -377,7 +377,7 @@ TEST_CASE("paper §5: the translated inertia (g ḡ) N (g ḡ)*, term by term", 
 
     // Through A ∨ (· ∧ s) it is the paper's 6x6 matrix acting on (ω, v), giving (l, p).
     const vec3 w{13, 17, 19}, v{23, 29, 31};
-    const auto P = dense::vee(B<cl062>("a1a2a3a"), dense::wedge(transformed, screw<cl062>(w, v)));
+    const auto P = dense::shuffle(B<cl062>("a1a2a3a"), dense::wedge(transformed, screw<cl062>(w, v)));
     const vec3 l{d.x * w.x, (d.y + m * tx * tx) * w.y - m * tx * v.z, (d.z + m * tx * tx) * w.z + m * tx * v.y};
     const vec3 p{m * v.x, m * tx * w.z + m * v.y, -m * tx * w.y + m * v.z};
     CHECK(P == coscrew(l, p));
@@ -404,7 +404,7 @@ TEST_CASE("a 10-generator algebra Cl(5,3,2)", "[dense]") {
         z[m] = (m % 97u == 0) ? static_cast<double>(m % 5u) - 2.0 : 0.0;
     }
     CHECK(dense::gp(dense::gp(x, y), z) == dense::gp(x, dense::gp(y, z)));
-    CHECK(dense::vee(I10, x) == x);
+    CHECK(dense::shuffle(I10, x) == x);
 }
 
 TEST_CASE("generic coefficient types", "[dense]") {
@@ -416,7 +416,7 @@ TEST_CASE("generic coefficient types", "[dense]") {
     const auto x = B<cl031, exact>("e1e", exact(-7)) + B<cl031, exact>("e2", exact(3));
     CHECK(dense::max_abs(x).v == 7);
     CHECK(dense::max_abs_diff(x, B<cl031, exact>("e2", exact(3))).v == 7);
-    CHECK(dense::vee(B<cl031, exact>("e1e2"), B<cl031, exact>("e3e")) == S<cl031, exact>(exact(1)));
+    CHECK(dense::shuffle(B<cl031, exact>("e1e2"), B<cl031, exact>("e3e")) == S<cl031, exact>(exact(1)));
 }
 
 TEST_CASE("max_abs, to_string, to_dense", "[dense]") {

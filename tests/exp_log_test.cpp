@@ -135,10 +135,10 @@ TEST_CASE("§3 g = e^{z/2}: the closed form agrees with the series 1 + z/2 + (z/
     // the closed form is the motor of §3: a pure rotation is the rotor, a pure translation the
     // translator (exactly), and g g* = 1
     const motor<double> rot = ctga::exp(make_screw<double>({0, 0, pi / 2}, {0, 0, 0}));
-    const motor<double> r = rotation(0.0, 0.0, 1.0, pi / 2);
+    const motor<double> r = make_rotor(pi / 2, 0.0, 0.0, 1.0);
     CHECK(rel(rot, r) <= 1e-16);
     const motor<double> tr = ctga::exp(make_screw<double>({0, 0, 0}, {1.5, -2.25, 1e6}));
-    CHECK(tr == motor<double>(translation(1.5, -2.25, 1e6)));
+    CHECK(tr == motor<double>(make_translator(1.5, -2.25, 1e6)));
     const motor_defect<double> d = unit_defect(ctga::exp(make_screw<double>({0.3, -1.2, 2.0}, {4, 5, 6})));
     CHECK(std::fabs(d.alpha_norm) <= 1e-15);
     CHECK(std::fabs(d.alpha_beta) <= 1e-15);
@@ -233,8 +233,8 @@ int for_each_round_trip_case(std::uint64_t seed, F f) {
 TEST_CASE("§3 exp(log(±g)) = g for motors g = t r, θ ∈ [0, π − 1e-9], |t| ≤ 1e6", "[mechanics][exp_log]") {
     range_worst worst;
     const int samples = for_each_round_trip_case(14, [&](double theta, double size, const auto& axis, const auto& dir) {
-                const motor<double> g = rigid_motion(translation(size * dir[0], size * dir[1], size * dir[2]),
-                                                     rotation(axis[0], axis[1], axis[2], theta));
+                const motor<double> g = rigid_motion(make_translator(size * dir[0], size * dir[1], size * dir[2]),
+                                                     make_rotor(theta, axis[0], axis[1], axis[2]));
                 worst.add(theta, rel(ctga::exp(ctga::log(g)), g));
                 // −g is the same motion; log flips it to α0 ≥ 0 and exp returns g
                 motor<double> minus_g = g;
@@ -267,13 +267,13 @@ TEST_CASE("§3 log(exp(z)) = z for screws with |ω| = θ ∈ [0, π − 1e-9], |
 TEST_CASE("§3 exp and log: exact cases, the sign of g, θ = π, float and long double", "[mechanics][exp_log]") {
     // pure translations, both ways, exactly
     const screw<double> v{0, 0, 0, 1e6, -3.5, 1e-300};
-    CHECK(ctga::exp(v) == motor<double>(translation(1e6, -3.5, 1e-300)));
+    CHECK(ctga::exp(v) == motor<double>(make_translator(1e6, -3.5, 1e-300)));
     CHECK(ctga::log(ctga::exp(v)) == v);
     CHECK(ctga::log(motor<double>{1, 0, 0, 0, 0, 0, 0, 0}) == screw<double>{});
     CHECK(ctga::exp(screw<double>{}) == motor<double>{1, 0, 0, 0, 0, 0, 0, 0});
 
     // g and −g: log picks θ ∈ [0, π]; a rotation by 3π/2 comes back as −π/2
-    const motor<double> g = rigid_motion(translation(1.0, 2.0, 3.0), rotation(0.0, 0.0, 1.0, 1.5 * pi));
+    const motor<double> g = rigid_motion(make_translator(1.0, 2.0, 3.0), make_rotor(1.5 * pi, 0.0, 0.0, 1.0));
     REQUIRE(g[0] < 0);
     const screw<double> z = ctga::log(g);
     CHECK(z[2] == Approx(-pi / 2).epsilon(1e-15));
@@ -331,8 +331,8 @@ TEST_CASE("§3 inverse(g) = g* and unit_defect are the two relations of g g* = 1
         CHECK(scalar_part(gg) - 1 == Approx(d.alpha_norm).margin(1e-15));
         CHECK(get<"e1e2e3e">(gg) == Approx(-2 * d.alpha_beta).margin(1e-15));
         const auto axis = random_unit<double>(rng);
-        const motor<double> h = rigid_motion(translation(5 * u(rng), 5 * u(rng), 5 * u(rng)),
-                                             rotation(axis[0], axis[1], axis[2], 3 * u(rng)));
+        const motor<double> h = rigid_motion(make_translator(5 * u(rng), 5 * u(rng), 5 * u(rng)),
+                                             make_rotor(3 * u(rng), axis[0], axis[1], axis[2]));
         CHECK(rel(motor<double>(h * inverse(h)), motor<double>{1, 0, 0, 0, 0, 0, 0, 0}) <= 1e-15);
     }
 }
@@ -348,8 +348,8 @@ TEST_CASE("§3 renormalize: g g* = 1 restored to rounding, and no further than t
         const auto axis = random_unit<double>(rng);
         const double size = std::pow(10.0, 3 * u(rng));  // |t| from 1e-3 to 1e3
         const auto dir = random_unit<double>(rng);
-        const motor<double> g = rigid_motion(translation(size * dir[0], size * dir[1], size * dir[2]),
-                                             rotation(axis[0], axis[1], axis[2], pi * u(rng)));
+        const motor<double> g = rigid_motion(make_translator(size * dir[0], size * dir[1], size * dir[2]),
+                                             make_rotor(pi * u(rng), axis[0], axis[1], axis[2]));
         motor<double> drifted = g;
         for (std::size_t i = 0; i < 8; ++i) drifted[i] += 1e-6 * u(rng);
         const motor<double> r = renormalize(drifted);
@@ -439,7 +439,7 @@ TEST_CASE("§2–3 homogeneous matrices: g = t r ↔ [R t; 0 1], round trips, an
         const double size = std::pow(10.0, 3 * u(rng));
         const auto dir = random_unit<double>(rng);
         const std::array<double, 3> t{size * dir[0], size * dir[1], size * dir[2]};
-        const motor<double> g = rigid_motion(translation(t[0], t[1], t[2]), rotation(axis[0], axis[1], axis[2], theta));
+        const motor<double> g = rigid_motion(make_translator(t[0], t[1], t[2]), make_rotor(theta, axis[0], axis[1], axis[2]));
 
         const homogeneous_matrix<double> m = to_homogeneous(g);
         const auto R = rodrigues(axis, theta);
@@ -473,7 +473,7 @@ TEST_CASE("§2–3 homogeneous matrices: g = t r ↔ [R t; 0 1], round trips, an
 
         // composition: the matrix of g h is the product of the matrices
         const auto axis2 = random_unit<double>(rng);
-        const motor<double> h = rigid_motion(translation(u(rng), u(rng), u(rng)), rotation(axis2[0], axis2[1], axis2[2], 3 * u(rng)));
+        const motor<double> h = rigid_motion(make_translator(u(rng), u(rng), u(rng)), make_rotor(3 * u(rng), axis2[0], axis2[1], axis2[2]));
         const homogeneous_matrix<double> mh = to_homogeneous(h);
         homogeneous_matrix<double> prod{};
         for (int i = 0; i < 4; ++i)
@@ -495,7 +495,7 @@ TEST_CASE("§2–3 homogeneous matrices: g = t r ↔ [R t; 0 1], round trips, an
 
 TEST_CASE("from_homogeneous rejects what is not a rigid motion, with the reason", "[mechanics][motion]") {
     const homogeneous_matrix<double> ok = to_homogeneous(
-        motor<double>(rigid_motion(translation(1.0, -2.0, 3.0), rotation(0.0, 0.6, 0.8, 2.0))));
+        motor<double>(rigid_motion(make_translator(1.0, -2.0, 3.0), make_rotor(2.0, 0.0, 0.6, 0.8))));
     REQUIRE(from_homogeneous(ok));
 
     homogeneous_matrix<double> reflection = ok;

@@ -10,10 +10,13 @@
 
 #include "support/catch.hpp"
 #include "support/properties.hpp"
+#include "support/published.hpp"
 
 namespace {
 
 using namespace ctga;
+using ctga::test::published;
+using ctga::test::published_mul;
 using G = cl062;
 
 // The paper's shapes (§5), written as the paper writes them.
@@ -40,7 +43,7 @@ constexpr auto Q0 = G::basis<"a2a3e1e"> + G::basis<"a3a1e2e"> + G::basis<"a1a2e3
 constexpr auto lie_bracket = formula([](auto s1, auto s2) { return half * (s1 * s2 - s2 * s1); });
 constexpr auto coadjoint = formula([](auto s, auto P) { return half * (bar(s) * P - P * bar(s)); });
 constexpr auto momentum = formula([](auto N, auto s) { return A & (N ^ s); });
-constexpr auto evaluation = formula([](auto P, auto s) { return P & (Q0 ^ s); });
+constexpr auto pairing = formula([](auto P, auto s) { return P & (Q0 ^ s); });
 constexpr auto twice_kinetic_energy = formula([](auto N, auto s) { return bar(s) & (N ^ s); });
 constexpr auto coriolis = formula([](auto N, auto s) {
     const auto P = A & (N ^ s);
@@ -56,16 +59,22 @@ constexpr expr::cost cost = cost_of<result_of<F, Args...>>;
 
 // ---- costs ---------------------------------------------------------------------------------
 
-static_assert(cost<decltype(lie_bracket), screw4, screw4> == expr::cost{18, 12}, "Lie bracket: 18m 12a");
+static_assert(cost<decltype(lie_bracket), screw4, screw4> == published<18, 12>, "Lie bracket: 18m 12a");
 static_assert(result_of<decltype(lie_bracket), screw4, screw4>::size() == 6, "the bracket has no grade 0 or 4 part");
-static_assert(cost<decltype(coadjoint), screw, coscrew> == expr::cost{18, 12}, "coadjoint: 18m 12a");
-static_assert(cost<decltype(momentum), inertia, screw> == expr::cost{36, 30}, "momentum, 36-blade N: 36m 30a");
-static_assert(cost<decltype(evaluation), coscrew, screw> == expr::cost{6, 5}, "P ∨ (Q0 ∧ s): 6m 5a");
-static_assert(cost_of<decltype(motor{} * motor{})> == expr::cost{48, 40}, "motor product: 48m 40a");
-static_assert(cost<decltype(twice_kinetic_energy), inertia, screw>.mul <= 42, "s̄ ∨ (N ∧ s): 42m staged");
-static_assert(cost<decltype(coriolis), inertia, screw>.mul <= 54, "Coriolis {s, A ∨ (N ∧ s)}: 54m");
-static_assert(cost<decltype(sandwich), motor, screw4>.mul <= 72, "g s g*: 72m");
+static_assert(cost<decltype(coadjoint), screw, coscrew> == published<18, 12>, "coadjoint: 18m 12a");
+static_assert(cost<decltype(momentum), inertia, screw> == published<36, 30>, "momentum, 36-blade N: 36m 30a");
+static_assert(cost<decltype(pairing), coscrew, screw> == published<6, 5>, "P ∨ (Q0 ∧ s): 6m 5a");
+static_assert(cost_of<decltype(motor{} * motor{})> == published<48, 40>, "motor product: 48m 40a");
+static_assert(cost<decltype(twice_kinetic_energy), inertia, screw>.mul == published_mul<42>, "s̄ ∨ (N ∧ s): 42m staged");
+static_assert(cost<decltype(coriolis), inertia, screw> == published<54, 42>, "Coriolis {s, A ∨ (N ∧ s)}: 54m 42a");
+static_assert(cost<decltype(sandwich), motor, screw4> == published<72, 58>, "g s g*: 72m 58a");
 static_assert(result_of<decltype(sandwich), motor, screw4>::size() == 6, "g s g* of a screw is a screw");
+// docs/design.md §2 walks examples/momentum.cpp: A ∨ (N ∧ s) with a diagonal N of six blades
+using example_inertia = G::mv<double, "a1ae1e", "a2ae2e", "a3ae3e", "a2a3e2e3", "a3a1e3e1", "a1a2e1e2">;
+static_assert(cost_of<decltype(A & (std::declval<const example_inertia&>() ^ std::declval<const screw&>()))> == published<6, 0>);
+// docs/engine.md §3: the Coriolis term multiplied out in full, with nothing staged
+static_assert(expr::terms_cost(expr::traits<result_of<decltype(coriolis), inertia, screw>::node_type, expr::staging::never>::terms).mul ==
+              published_mul<216>);
 
 TEST_CASE("the counted expressions evaluate to the dense reference's numbers", "[expr][cost]") {
     std::mt19937_64 rng(2026);
@@ -80,15 +89,15 @@ TEST_CASE("the counted expressions evaluate to the dense reference's numbers", "
         const auto ds = dense::to_dense(s), ds2 = dense::to_dense(s2), dP = dense::to_dense(P), dN = dense::to_dense(N);
         const auto da = dense::to_dense(a), db = dense::to_dense(b), dg = dense::to_dense(g), dh = dense::to_dense(h);
         const auto half_commutator = [](const auto& x, const auto& y) { return 0.5 * (dense::gp(x, y) - dense::gp(y, x)); };
-        const auto dP_of = dense::vee(dA, dense::wedge(dN, ds));
+        const auto dP_of = dense::shuffle(dA, dense::wedge(dN, ds));
 
         test::check_close("Lie bracket", lie_bracket(a, b), half_commutator(da, db));
         test::check_close("Lie bracket (Cl(0,6,2) screws)", lie_bracket(s, s2), half_commutator(ds, ds2));
         test::check_close("coadjoint", coadjoint(s, P), half_commutator(dense::bar(ds), dP));
         test::check_close("momentum", momentum(N, s), dP_of);
-        test::check_close("P ∨ (Q0 ∧ s)", evaluation(P, s), dense::vee(dP, dense::wedge(dQ0, ds)));
+        test::check_close("P ∨ (Q0 ∧ s)", pairing(P, s), dense::shuffle(dP, dense::wedge(dQ0, ds)));
         test::check_close("motor product", g * h, dense::gp(dg, dh));
-        test::check_close("s̄ ∨ (N ∧ s)", twice_kinetic_energy(N, s), dense::vee(dense::bar(ds), dense::wedge(dN, ds)));
+        test::check_close("s̄ ∨ (N ∧ s)", twice_kinetic_energy(N, s), dense::shuffle(dense::bar(ds), dense::wedge(dN, ds)));
         test::check_close("Coriolis", coriolis(N, s), half_commutator(dense::bar(ds), dP_of));
         test::check_close("g s g*", sandwich(g, a), dense::gp(dense::gp(dg, da), dense::conjugate(dg)));
         // pruning: a screw-typed result computes six components, and they are the same
@@ -273,7 +282,7 @@ TEST_CASE("identities 2–11 hold numerically against the dense reference", "[ex
         const auto ds = dense::to_dense(s), dP = dense::to_dense(P), dN = dense::to_dense(N);
         const auto comm = [](const auto& x, const auto& y) { return dense::gp(x, y) - dense::gp(y, x); };
         test::check_close("identity 2", formula([](auto x) { return Q0 ^ x; })(s), dense::wedge(dQ0, ds));
-        test::check_close("identity 3", evaluation(P, s), dense::vee(dense::wedge(dP, dQ0), ds));
+        test::check_close("identity 3", pairing(P, s), dense::shuffle(dense::wedge(dP, dQ0), ds));
         test::check_close("identity 4", formula([](auto x) { return A & (Q0 ^ x); })(s), dense::bar(ds));
 
         // 5, 6, 7 on a random diagonal inertia and a random motor g = t r (unit: g g* = 1)
@@ -281,8 +290,8 @@ TEST_CASE("identities 2–11 hold numerically against the dense reference", "[ex
         const scalar sdx{dx}, sdy{dy}, sdz{dz}, sm{m};
         const auto Nd = eval(formula(diagonal_inertia)(sdx, sdy, sdz, sm));
         const auto dNd = dense::to_dense(Nd);
-        test::check_close("identity 5", momentum(Nd, s), dense::vee(dA, dense::wedge(dNd, ds)));
-        test::check_close("identity 6", twice_kinetic_energy(Nd, s), dense::vee(dense::bar(ds), dense::wedge(dNd, ds)));
+        test::check_close("identity 5", momentum(Nd, s), dense::shuffle(dA, dense::wedge(dNd, ds)));
+        test::check_close("identity 6", twice_kinetic_energy(Nd, s), dense::shuffle(dense::bar(ds), dense::wedge(dNd, ds)));
         const auto r6 = test::random_fill<G::mv<double, "1", "e2e3", "e3e1", "e1e2">>(rng);
         const auto r = eval(r6 / std::sqrt(scalar_part(r6 * conj(r6))));          // a unit rotor
         const auto t = eval(G::basis<"1"> + half * test::random_fill<G::mv<double, "e1e", "e2e", "e3e">>(rng));
@@ -301,8 +310,8 @@ TEST_CASE("identities 2–11 hold numerically against the dense reference", "[ex
         // (sN − Ns) ∧ s: the engine's type has no blade at all, the dense value is rounding noise
         static_assert(decltype(formula([](auto x, auto M) { return (x * M - M * x) ^ x; })(s, N))::size() == 0);
         CHECK(dense::max_abs(dense::wedge(comm(ds, dN), ds)) <= 1e-12);
-        test::check_close("identity 10", coriolis(N, s), 0.5 * dense::vee(dA, dense::wedge(comm(dense::bar(ds), dN), ds)));
-        test::check_close("identity 11", formula([](auto x) { return (A * E) & x; })(N), dense::vee(dense::gp(dA, dE), dN));
+        test::check_close("identity 10", coriolis(N, s), 0.5 * dense::shuffle(dA, dense::wedge(comm(dense::bar(ds), dN), ds)));
+        test::check_close("identity 11", formula([](auto x) { return (A * E) & x; })(N), dense::shuffle(dense::gp(dA, dE), dN));
     }
 }
 

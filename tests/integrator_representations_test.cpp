@@ -149,7 +149,7 @@ struct random_inputs {
         // inputs. This is the order g++ drew them in as arguments, so its inputs are unchanged.
         const T angle = T(3) * uniform();
         const T tz = T(2) * uniform(), ty = T(2) * uniform(), tx = T(2) * uniform();
-        return motor<T>(rigid_motion(translation(tx, ty, tz), rotation(a[0], a[1], a[2], angle)));
+        return motor<T>(rigid_motion(make_translator(tx, ty, tz), make_rotor(angle, a[0], a[1], a[2])));
     }
     screw<T> twist() { return screw<T>{uniform(), uniform(), uniform(), uniform(), uniform(), uniform()}; }
     coscrew<T> cotwist() { return coscrew<T>{uniform(), uniform(), uniform(), uniform(), uniform(), uniform()}; }
@@ -335,8 +335,8 @@ TEST_CASE("dense and matrix models: primitives agree with ctga's", "[integrators
 
     random_inputs<double> in(13);
     const rigid_body_motion<double, frame::body> C{make_rigid_body(in.body())};
-    const ct::dense_motion<double, frame::body> D(C.body.mass);
-    const ct::matrix_motion<double, frame::body> X(C.body.mass);
+    const ct::dense_motion<double, frame::body> D(C.body.properties);
+    const ct::matrix_motion<double, frame::body> X(C.body.properties);
     const double scales[] = {0.0, 1e-12, 1e-6, 1e-3, 0.1, 0.5, 1.0, 2.0, 3.0, 6.0, 10.0};
     for (int k = 0; k < 200; ++k) {
         const screw<double> s = in.twist(), s2 = in.twist();
@@ -429,7 +429,7 @@ mass_properties<double> asymmetric_body() {
     return *make_mass_properties(2.0, vec3<double>{0.1, -0.2, 0.3},
                                  mat3<double>{{{0.9, 0.05, -0.02}, {0.05, 0.7, 0.03}, {-0.02, 0.03, 0.5}}});
 }
-motor<double> initial_pose() { return rigid_motion(translation(0.3, -0.5, 0.2), rotation(0.48, 0.6, 0.64, 0.8)); }
+motor<double> initial_pose() { return rigid_motion(make_translator(0.3, -0.5, 0.2), make_rotor(0.8, 0.48, 0.6, 0.64)); }
 screw<double> initial_velocity() { return screw<double>{0.7, -0.4, 1.1, 0.2, 0.3, -0.1}; }
 
 struct trajectory_errors {

@@ -222,8 +222,8 @@ TEST_CASE("far from the origin: the fixed-frame ṡ as the paper writes it, and 
     const wrench<double> W_b{0.2, -0.1, 0.05, 1.0, 0.5, -0.3};
     double worst_remedy_per_distance = 0, paper_at_1e6 = 0, remedy_at_1e6 = 0;
     for (double distance = 1; distance <= 1e6; distance *= 10) {
-        const motor<double> g = rigid_motion(translation(0.6 * distance, -0.48 * distance, 0.64 * distance),
-                                             rotation(1.0 / 3, 2.0 / 3, 2.0 / 3, 0.7));
+        const motor<double> g = rigid_motion(make_translator(0.6 * distance, -0.48 * distance, 0.64 * distance),
+                                             make_rotor(0.7, 1.0 / 3, 2.0 / 3, 2.0 / 3));
         const motor_map<double> G = map_of(g);
         const screw<double> s = transform(G, s_b);
         const wrench<double> W = transform(G, W_b);  // H⁻ᵀ W_b

@@ -32,7 +32,7 @@ rigid_body<T> asymmetric_body() {
 
 template <class T>
 motor<T> some_pose() {
-    return rigid_motion(translation(T(0.5), T(-1), T(2)), rotation(T(1) / T(3), T(2) / T(3), T(2) / T(3), T(0.7)));
+    return rigid_motion(make_translator(T(0.5), T(-1), T(2)), make_rotor(T(0.7), T(1) / T(3), T(2) / T(3), T(2) / T(3)));
 }
 
 // The rotation angle between two poses, ‖log(g_ref* g)‖ restricted to ω: the attitude error.
@@ -195,6 +195,22 @@ TEST_CASE("bad input and blow-ups are reported, never returned as a state", "[in
         CHECK(integrate(lie_rk4{}, model, bad, 0.01, 10).error == error_code::non_finite);
         CHECK(integrate(rk4{}, model, x0, inf, 10).error == error_code::non_finite);
         CHECK(integrate(rk4{}, model, x0, nan, 10).error == error_code::non_finite);
+    }
+    SECTION("an initial pose that is not a unit motor is refused, not integrated") {
+        // the rotor an axis (0, 0, 5) taken as unit gave: cos ½ + 5 sin ½ e1e2, |α| = 2.5
+        auto bad = x0;
+        bad.g = motor<double>{std::cos(0.5), 0.0, 0.0, 5 * std::sin(0.5), 0.0, 0.0, 0.0, 0.0};
+        const auto r = integrate(rk4{}, model, bad, 0.01, 10);
+        CHECK(r.error == error_code::not_a_motor);
+        CHECK(r.steps == 0);
+        // translation and rotation parts that disagree (α·β ≠ 0 beyond rounding)
+        bad = x0;
+        bad.g[4] += 1e-3;
+        CHECK(integrate(lie_rk4{}, model, bad, 0.01, 10).error == error_code::not_a_motor);
+        // rounding-sized drift is a pose
+        bad = x0;
+        for (std::size_t k = 0; k < 8; ++k) bad.g[k] *= 1 + 1e-13;
+        CHECK(integrate(rk4{}, model, bad, 0.01, 10));
     }
     SECTION("a wrench that turns NaN stops the run at the last good state") {
         struct failing_wrench {

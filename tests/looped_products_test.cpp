@@ -44,7 +44,7 @@ void check_row_forms() {
     using namespace ctga::rules;
     CHECK(row_form_mismatches<geometric<Alg>, Alg>() == 0);
     CHECK(row_form_mismatches<exterior<Alg>, Alg>() == 0);
-    CHECK(row_form_mismatches<regressive<Alg>, Alg>() == 0);
+    CHECK(row_form_mismatches<shuffle<Alg>, Alg>() == 0);
     CHECK(row_form_mismatches<left_contraction<Alg>, Alg>() == 0);
     CHECK(row_form_mismatches<right_contraction<Alg>, Alg>() == 0);
     CHECK(row_form_mismatches<scalar<Alg>, Alg>() == 0);

@@ -48,7 +48,7 @@ TEST_CASE("10 generators: 512 x 512 even and 1024 x 1024 general products equal 
     const auto y = random_fill<general<ten>>(rng);
     static_assert(by_blocks<decltype(x * y)> && by_blocks<decltype(x & y)> && by_blocks<decltype(x | y)>);
     check_close("general * general", x * y, dense::gp(as_dense(x), as_dense(y)));
-    check_close("general ∨ general", x & y, dense::vee(as_dense(x), as_dense(y)));
+    check_close("general ∨ general", x & y, dense::shuffle(as_dense(x), as_dense(y)));
     check_close("general ⌋ general", x | y, dense::lcont(as_dense(x), as_dense(y)));
 }
 

@@ -32,11 +32,24 @@ mat3 rotation_matrix(const vec3& u, double theta) {
 
 TEST_CASE("a rotor rotates by +θ about its axis (right-hand rule)", "[mechanics][motion]") {
     // a quarter turn about z takes x to y
-    const auto r = rotation(0.0, 0.0, 1.0, std::acos(-1.0) / 2);
+    const auto r = make_rotor(std::acos(-1.0) / 2, 0.0, 0.0, 1.0);
     const screw<> along_x{0, 0, 0, 1, 0, 0};
     const screw<> s = adjoint(motor<>(r), along_x);
     CHECK(get<"e1e">(s) == Approx(0).margin(1e-15));
     CHECK(get<"e2e">(s) == Approx(1));
+}
+
+TEST_CASE("make_rotor makes a unit rotor from any non-zero axis, and refuses the zero axis", "[mechanics][motion]") {
+    // (0, 0, 5) is the z axis: the same rotation as (0, 0, 1), a unit rotor, not |α| = 2.5
+    const rotor<> r5 = make_rotor(1.0, 0.0, 0.0, 5.0), r1 = make_rotor(1.0, 0.0, 0.0, 1.0);
+    for (std::size_t k = 0; k < 4; ++k) CHECK(r5[k] == Approx(r1[k]).margin(1e-16));
+    CHECK(r1[0] == Approx(std::cos(0.5)).margin(1e-16));
+    CHECK(r1[3] == Approx(std::sin(0.5)).margin(1e-16));
+    CHECK(near_unit(motor<>(make_rotor(0.3, 1e-300, 2e-300, -2e-300))));
+    CHECK(near_unit(motor<>(make_rotor(0.3, 1e300, 2e300, -2e300))));
+    CHECK(make_rotor_checked(1.0, 0.0, 0.0, 0.0).error == error_code::zero_direction);
+    CHECK(make_rotor_checked(std::nan(""), 0.0, 0.0, 1.0).error == error_code::non_finite);
+    CHECK(make_rotor_checked(1.0, 0.0, HUGE_VAL, 1.0).error == error_code::non_finite);
 }
 
 TEST_CASE("g g* = 1 and g s g* = H s for random motors, against the 6×6 formalism", "[mechanics][motion]") {
@@ -48,7 +61,7 @@ TEST_CASE("g g* = 1 and g s g* = H s for random motors, against the 6×6 formali
         for (double& a : axis) a /= n;
         const double theta = 3 * u(rng);
         const vec3 t{10 * u(rng), 10 * u(rng), 10 * u(rng)};
-        const motor<> g = rigid_motion(translation(t[0], t[1], t[2]), rotation(axis[0], axis[1], axis[2], theta));
+        const motor<> g = rigid_motion(make_translator(t[0], t[1], t[2]), make_rotor(theta, axis[0], axis[1], axis[2]));
 
         // §3: g g* = 1 is α·α = 1 and α0β0 + α·β = 0
         const auto unit = eval(g * conj(g));

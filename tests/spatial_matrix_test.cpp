@@ -349,8 +349,8 @@ TEST_CASE("the mechanics agree with the 6x6 formalism of §2 on 1,000 random cas
         const ctga::mass_properties<double>& mp = *mp_checked;
         const ctga::rigid_inertia<double> N = ctga::inertia_of(mp);
         const ctga::mobility<double> M = ctga::mobility_of(mp);
-        const ctga::motor<double> g = ctga::rigid_motion(ctga::translation(c.t[0], c.t[1], c.t[2]),
-                                                         ctga::rotation(c.axis[0], c.axis[1], c.axis[2], c.theta));
+        const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(c.t[0], c.t[1], c.t[2]),
+                                                         ctga::make_rotor(c.theta, c.axis[0], c.axis[1], c.axis[2]));
         const ctga::motor_map<double> G = ctga::map_of(g);
         const auto cs = ctga::screw_from_vector6(c.s), cs2 = ctga::screw_from_vector6(c.s2);
         const auto cW = ctga::coscrew_from_vector6(c.W), cP = ctga::coscrew_from_vector6(c.P);
@@ -446,8 +446,8 @@ TEST_CASE("the mechanics agree with the 6x6 formalism of §2 on 1,000 random cas
         record("mobility_matrix(mobility_of(mp)) vs N6^-1", rel(ld(ctga::mobility_matrix(M)), M6ref), c);
         record("momentum(N, s) = A v (N ^ s) vs N6 s", rel(ld(ctga::momentum(N, cs)), N6 * s), c);
         record("kinetic_energy(N, s) vs s^T N6 s / 2", rel(Real(ctga::kinetic_energy(N, cs)), s.dot(N6 * s) / 2), c);
-        record("velocity(M, P) = E v (M ^ P) vs N6^-1 P", rel(ld(ctga::velocity(M, cP)), M6ref * P), c);
-        record("evaluation(P, s) vs P^T s", rel(Real(ctga::evaluation(cP, cs)), P.dot(s)), c);
+        record("velocity_from(M, P) = E v (M ^ P) vs N6^-1 P", rel(ld(ctga::velocity_from(M, cP)), M6ref * P), c);
+        record("pairing(P, s) vs P^T s", rel(Real(ctga::pairing(cP, cs)), P.dot(s)), c);
 
         // ---- bracket, coadjoint action and their duality (§2, §6) ----
         const ctga::screw<double> br = ctga::bracket(cs, cs2);
@@ -456,10 +456,10 @@ TEST_CASE("the mechanics agree with the 6x6 formalism of §2 on 1,000 random cas
         record("coadjoint(s, P)", rel(ld(co), coadjoint_action(s2, P)), c);
         {
             // s1ᵀ {s2, P} = [s1, s2]ᵀ P, both sides through ctga
-            const Real lhs = ctga::evaluation(co, cs), rhs = ctga::evaluation(cP, br);
-            record("duality: evaluation(coadjoint(s2, P), s1) vs reference", rel(lhs, s.dot(coadjoint_action(s2, P))),
+            const Real lhs = ctga::pairing(co, cs), rhs = ctga::pairing(cP, br);
+            record("duality: pairing(coadjoint(s2, P), s1) vs reference", rel(lhs, s.dot(coadjoint_action(s2, P))),
                    c);
-            record("duality: evaluation(P, bracket(s1, s2)) vs reference", rel(rhs, lie_bracket(s, s2).dot(P)), c);
+            record("duality: pairing(P, bracket(s1, s2)) vs reference", rel(rhs, lie_bracket(s, s2).dot(P)), c);
         }
 
         // ---- moving inertias and mobilities (§2: N → H⁻ᵀ N H⁻¹, M → H M Hᵀ) ----

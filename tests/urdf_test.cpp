@@ -189,7 +189,7 @@ void compare_dynamics(const ch::model<Tree>& m, const fs::model& ref, std::uint6
             if (ref[i].kind == fs::joint_kind::floating) {
                 const Eigen::Quaterniond quat(fs::random_rotation(rng));
                 const fs::vec3 t = fs::uniform_vec3(rng, 1.0);
-                const ctga::motor<double> g = ctga::rigid_motion(ctga::translation(t[0], t[1], t[2]),
+                const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(t[0], t[1], t[2]),
                                                                  ctga::rotor<double>{quat.w(), quat.x(), quat.y(), quat.z()});
                 if constexpr (Tree::nq >= 8)  // (else GCC sees q[qo + 7] out of the arm's 7 numbers)
                     for (std::size_t k = 0; k < 8; ++k) q[qo + k] = g[k];
@@ -258,10 +258,10 @@ static_assert(arm7::make_model<double>() && quadruped::make_model<float>());
 
 }  // namespace
 
-TEST_CASE("urdf: the motor convention the generator relies on: map_of(rigid_motion(translation(t), rotation(u, θ))) is (Rot(u, θ), t)") {
+TEST_CASE("urdf: the motor convention the generator relies on: map_of(rigid_motion(make_translator(t), make_rotor(θ, u))) is (Rot(u, θ), t)") {
     // a right-handed quarter turn about z takes x to y
-    const ctga::motor_map<double> G = ctga::map_of(ctga::rigid_motion(ctga::translation(1.0, 2.0, 3.0),
-                                                                      ctga::rotation(0.0, 0.0, 1.0, std::acos(0.0))));
+    const ctga::motor_map<double> G = ctga::map_of(ctga::rigid_motion(ctga::make_translator(1.0, 2.0, 3.0),
+                                                                      ctga::make_rotor(std::acos(0.0), 0.0, 0.0, 1.0)));
     fs::mat3 quarter_z;
     quarter_z << 0, -1, 0, 1, 0, 0, 0, 0, 1;
     CHECK(max_abs_diff(G, quarter_z, fs::vec3(1, 2, 3)) < 1e-15);
@@ -271,7 +271,7 @@ TEST_CASE("urdf: the motor convention the generator relies on: map_of(rigid_moti
         const fs::vec3 u = fs::random_unit_vec3(rng), t = fs::uniform_vec3(rng, 1.0);
         const double theta = fs::uniform(rng, -4, 4);
         const ctga::motor_map<double> H =
-            ctga::map_of(ctga::rigid_motion(ctga::translation(t[0], t[1], t[2]), ctga::rotation(u[0], u[1], u[2], theta)));
+            ctga::map_of(ctga::rigid_motion(ctga::make_translator(t[0], t[1], t[2]), ctga::make_rotor(theta, u[0], u[1], u[2])));
         CHECK(max_abs_diff(H, fs::axis_angle(u, theta), t) < 1e-14);
     }
     // URDF's rpy as written here: roll about x first, then pitch about y, then yaw about z (fixed axes)

@@ -449,13 +449,16 @@ def generate(urdf_path, robot_name, root, bodies, name, namespace, floating_base
                  f"({b.kind}{', axis ' + ' '.join(repr(a) for a in b.axis) if b.axis is not None else ''}); "
                  f"origin xyz {' '.join(repr(x) for x in b.xyz)} rpy {' '.join(repr(x) for x in b.rpy)}")
         L.append(f"        const auto x = ctga::chains::make_link<ctga::chains::{b.cpp_joint}>(")
-        L.append(f"            ctga::rigid_motion(ctga::translation({vec(b.xyz)}),")
-        L.append(f"                               ctga::rotation({vec(u)}, {num(theta)})),")
+        L.append(f"            ctga::rigid_motion(ctga::make_translator({vec(b.xyz)}),")
+        L.append(f"                               ctga::make_rotor({num(theta)}, {vec(u)})),")
         L.append(f"            ctga::make_mass_properties({num(inertial.mass)}, ctga::vec3<T>{{{vec(inertial.com)}}},")
         L.append(f"                                       ctga::mat3<T>{{{{{{{vec(inertial.tensor[0])}}},")
         L.append(f"                                                      {{{vec(inertial.tensor[1])}}},")
-        L.append(f"                                                      {{{vec(inertial.tensor[2])}}}}}}}),")
-        L.append(f"            ctga::vec3<T>{{{vec(axis)}}});")
+        if b.cpp_joint in ("revolute_about", "prismatic_along"):  # the joints whose axis is a run-time parameter
+            L.append(f"                                                      {{{vec(inertial.tensor[2])}}}}}}}),")
+            L.append(f"            ctga::vec3<T>{{{vec(axis)}}});")
+        else:
+            L.append(f"                                                      {{{vec(inertial.tensor[2])}}}}}}}));")
         L.append("        if (!x) return {{}, x.error};")
         L.append(f"        m.template link<{b.index}>() = *x;")
         L.append("    }")

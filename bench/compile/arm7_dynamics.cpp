@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         ([&] {
             const auto link = ch::make_link<arm7::joint_at<I>>(
-                ctga::rigid_motion(ctga::translation(0.0, 0.0, I == 0 ? 0.0 : 0.3), ctga::rotation(0.0, 0.0, 1.0, 0.0)),
+                ctga::rigid_motion(ctga::make_translator(0.0, 0.0, I == 0 ? 0.0 : 0.3), ctga::make_rotor(0.0, 0.0, 0.0, 1.0)),
                 ctga::make_mass_properties(2.0 - 0.2 * I, ctga::vec3<double>{0.01, 0.0, 0.15},
                                            ctga::mat3<double>{{{0.02, 0.001, 0.0}, {0.001, 0.02, 0.0}, {0.0, 0.0, 0.005}}}));
             ok = ok && link;

@@ -19,7 +19,7 @@ int main(int argc, char** argv) {
         return 1;
     }
     const cg::rigid_body<> body = *checked;
-    const cg::motor<> g = cg::rigid_motion(cg::translation(1.0, x, 0.5), cg::rotation(0.0, 0.0, 1.0, x));
+    const cg::motor<> g = cg::rigid_motion(cg::make_translator(1.0, x, 0.5), cg::make_rotor(x, 0.0, 0.0, 1.0));
     const cg::screw<> s{0.1, 2.0, x, 0.0, 0.5, 0.0};
     const cg::wrench<> W{0, 0, 0, 0, 0, -9.81 * m};
 

@@ -27,7 +27,6 @@
 #include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/convert.hpp"
 #include "ctga/mechanics/coscrew.hpp"
-#include "ctga/mechanics/deprecated.hpp"
 #include "ctga/mechanics/dynamics.hpp"
 #include "ctga/mechanics/inertia.hpp"
 #include "ctga/mechanics/inertia_matrix.hpp"
@@ -44,3 +43,4 @@
 #include "ctga/support/checked.hpp"
 #include "ctga/support/inline.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/unit_direction.hpp"

@@ -198,7 +198,7 @@ constexpr checked<chains::model<Tree, T>> make_chain() noexcept {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         ([&] {
             const auto link = chains::make_link<typename Tree::template joint_at<I>>(
-                rigid_motion(translation(T(0), T(0), I == 0 ? T(0) : T(0.3)), rotation(T(1), T(0), T(0), T(0.1) * T(I))),
+                rigid_motion(make_translator(T(0), T(0), I == 0 ? T(0) : T(0.3)), make_rotor(T(0.1) * T(I), T(1), T(0), T(0))),
                 make_mass_properties(T(2) - T(0.2) * T(I), vec3<T>{T(0.01), T(0), T(0.15)},
                                      mat3<T>{{{T(0.02), T(0.001), T(0)}, {T(0.001), T(0.022), T(0)}, {T(0), T(0), T(0.006)}}}));
             if (!link) e = link.error;
@@ -285,8 +285,8 @@ int main(int argc, char** argv) {
         return 1;
     }
     const rigid_body<F> b = *made;
-    const motor<F> g0 = rigid_motion(translation(F(0.5), F(-1), F(2)),
-                                     rotation(F(1) / F(3), F(2) / F(3), F(2) / F(3), F(0.7)));
+    const motor<F> g0 = rigid_motion(make_translator(F(0.5), F(-1), F(2)),
+                                     make_rotor(F(0.7), F(1) / F(3), F(2) / F(3), F(2) / F(3)));
     const screw<F> s_body0{F(0.3), F(1), F(-0.4), F(0.2), F(-0.1), F(0.5)};
 
     std::printf("ctga embedded: float, -fno-exceptions -fno-rtti, operator new aborts; h = %g, %lld steps\n",
@@ -322,9 +322,9 @@ int main(int argc, char** argv) {
                                       puck{{F(0.5), F(0.01)}, weight<planar>(F(0.5), gravity)},
                                       box{{F(1), F(0.02), F(0.03), F(0.04)}}, static_body<F>{g0});
         const auto x0 = world.initial_state(
-            motion_state<puck::motor_type, puck::screw_type>{project<puck::motor_type>(motor<F>(translation(F(0.2), F(-0.3), F(0)))),
+            motion_state<puck::motor_type, puck::screw_type>{project<puck::motor_type>(motor<F>(make_translator(F(0.2), F(-0.3), F(0)))),
                                                              puck::screw_type{F(1), F(0), F(0)}},
-            motion_state<motor<F>, screw<F>>{motor<F>(translation(F(0.5), F(-0.6), F(0.1))), s_body0});
+            motion_state<motor<F>, screw<F>>{motor<F>(make_translator(F(0.5), F(-0.6), F(0.1))), s_body0});
         const auto run = integrate(rk4{}, world.model(), x0, h, steps);
         check(static_cast<bool>(run) && run.steps == steps, "a scene of a planar puck, a box and a static post steps");
         const motor_map<F> puck_at = map_of(motor<F>(part<0>(run.state.g)));

@@ -169,9 +169,9 @@ dense62<T> sandwich(const dense62<T>& h, const dense62<T>& x) {
 template <class T>
 dense31<T> acceleration(const dense62<T>& N, const dense62<T>& M, const dense62<T>& s, const dense62<T>& W) {
     namespace d = ctga::dense;
-    const dense62<T> P = d::vee(A<T>(), d::wedge(N, s));
+    const dense62<T> P = d::shuffle(A<T>(), d::wedge(N, s));
     const dense62<T> rhs = W - half_commutator(d::bar(s), P);
-    return lower_screw(d::vee(E<T>(), d::wedge(M, rhs)));
+    return lower_screw(d::shuffle(E<T>(), d::wedge(M, rhs)));
 }
 
 }  // namespace dense_model_detail
@@ -272,6 +272,9 @@ struct dense_motion {
     // g / √(g g*) (motion.hpp, support/dual_quaternion.hpp); NaNs for α = 0 or a non-finite g
     [[nodiscard]] motor_type renormalize(const motor_type& g) const {
         return dense_model_detail::motor_from(dual_quaternion::renormalized(dense_model_detail::motor_coefficients(g)));
+    }
+    [[nodiscard]] bool unit(const motor_type& g) const {
+        return dual_quaternion::near_unit(dense_model_detail::motor_coefficients(g));
     }
     [[nodiscard]] bool finite(const motor_type& g, const screw_type& s) const {
         for (const T& v : g.components())

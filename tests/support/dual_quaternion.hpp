@@ -50,4 +50,11 @@ std::array<T, 8> renormalized(std::array<T, 8> x) {
     return x;
 }
 
+// Whether the eight numbers are a unit motor up to rounding: ctga::near_unit's test (the models'
+// check of an integration's initial pose is the library's predicate, not an independent one).
+template <class T>
+bool near_unit(const std::array<T, 8>& x) {
+    return ctga::near_unit(ctga::motor<T>{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]});
+}
+
 }  // namespace ctga::test::dual_quaternion

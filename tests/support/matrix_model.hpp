@@ -267,6 +267,11 @@ struct matrix_motion {
         x = dual_quaternion::renormalized(x);
         return Eigen::Map<const motor_type>(x.data());
     }
+    [[nodiscard]] bool unit(const motor_type& g) const {
+        std::array<T, 8> x{};
+        for (int i = 0; i < 8; ++i) x[static_cast<std::size_t>(i)] = g(i);
+        return dual_quaternion::near_unit(x);
+    }
     [[nodiscard]] bool finite(const motor_type& g, const screw_type& s) const { return g.allFinite() && s.allFinite(); }
     [[nodiscard]] T magnitude(const screw_type& z) const { return z.cwiseAbs().maxCoeff(); }
 };

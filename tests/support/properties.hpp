@@ -62,7 +62,7 @@ inline const auto bilinear_ops = hana::make_tuple(
     hana::make_tuple(BOOST_HANA_STRING("exterior ^"), [](const auto& x, const auto& y) { return x ^ y; },
                      [](const auto& x, const auto& y) { return dense::wedge(x, y); }),
     hana::make_tuple(BOOST_HANA_STRING("shuffle &"), [](const auto& x, const auto& y) { return x & y; },
-                     [](const auto& x, const auto& y) { return dense::vee(x, y); }),
+                     [](const auto& x, const auto& y) { return dense::shuffle(x, y); }),
     hana::make_tuple(BOOST_HANA_STRING("left contraction |"), [](const auto& x, const auto& y) { return x | y; },
                      [](const auto& x, const auto& y) { return dense::lcont(x, y); }),
     hana::make_tuple(BOOST_HANA_STRING("right contraction"),

@@ -105,7 +105,7 @@ struct scalar {
     }
 };
 
-// Shuffle (regressive) product, paper §4, the Grassmann–Cayley definition:
+// Shuffle product ∨ (elsewhere called the regressive product), paper §4, the Grassmann–Cayley definition:
 //   b ∨ c = Σ_σ sign(σ) det(b_σ(1..n−k), c_1..c_k) b_σ(n−k+1) ∧ … ∧ b_σ(j).
 // For basis blades the determinant is non-zero only for the one split of b whose first part K
 // is the complement of c, so b ∨ c ≠ 0 iff b ∪ c holds every generator, and then
@@ -113,7 +113,7 @@ struct scalar {
 // with det(K, c) the sign that sorts the word K·c into the basis order. No metric, no
 // pseudoscalar inverse: valid in degenerate algebras such as Cl(0,6,2).
 template <class Alg>
-struct regressive {
+struct shuffle {
     static constexpr std::uint64_t id = 6;
     static constexpr signed_blade apply(blade_mask b, blade_mask c) noexcept {
         constexpr blade_mask all = Alg::pseudoscalar_mask;

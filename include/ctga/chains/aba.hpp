@@ -71,8 +71,8 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
         if constexpr (J::nv == 1) {
             const auto S = J::template subspace<0, T>(L.joint);
             U[i] = momentum(NA[i], S);
-            D_inverse[i] = T(1) / evaluation(U[i], S);
-            u[i] = tau[Tree::v_offset[i]] - evaluation(pA[i], S);
+            D_inverse[i] = T(1) / pairing(U[i], S);
+            u[i] = tau[Tree::v_offset[i]] - pairing(pA[i], S);
             if constexpr (p >= 0) {
                 // an axis joint's S is one screw component: N^a has a zero row and column there
                 constexpr std::size_t null = null_component<J>();
@@ -111,7 +111,7 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
             a[i] = a_parent;
         } else if constexpr (J::nv == 1) {
             const screw<T> a1 = a_parent + bias(body);
-            qdd[o] = (u[i] - evaluation(U[i], a1)) * D_inverse[i];
+            qdd[o] = (u[i] - pairing(U[i], a1)) * D_inverse[i];
             a[i] = a1 + J::template subspace<0, T>(L.joint) * qdd[o];
         } else {
             const coscrew<T> tau_i{tau[o], tau[o + 1], tau[o + 2], tau[o + 3], tau[o + 4], tau[o + 5]};

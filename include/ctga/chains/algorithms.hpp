@@ -5,7 +5,7 @@
 //   rnea.hpp                rnea: inverse dynamics τ(q, q̇, q̈), recursive Newton–Euler            (§5.3)
 //   crba.hpp                crba: the joint-space mass matrix H(q), composite rigid bodies        (§6.2)
 //   aba.hpp                 aba: forward dynamics q̈(q, q̇, τ), articulated bodies                (§7.3)
-//   energy.hpp              kinetic_energy, potential_energy
+//   energy.hpp              tree_kinetic_energy, tree_potential_energy
 //   frame_jacobian.hpp      body_jacobian, world_jacobian: the geometric Jacobian of a body's frame
 //   checked_call.hpp        checked_call: any of them on checked inputs, with its result checked
 //

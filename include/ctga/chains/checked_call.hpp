@@ -5,14 +5,19 @@
 //
 // The algorithms are plain arithmetic: a NaN in q gives a NaN in τ. checked_call runs one
 // on inputs it has checked and checks its result, so nothing non-finite passes for an answer:
-//   non_finite    a NaN or infinity in q, q̇, q̈, τ, the wrenches or gravity, or in the result
+//   non_finite    a NaN or infinity in the model (a link's placement, inertia or axis, gravity),
+//                 in q, q̇, q̈, τ, the wrenches, or in the result
 //   not_a_motor   a floating joint's configuration with a zero rotor part (no rigid motion)
-// (A model's inertias and axes were checked when it was built: make_link.)
+// (make_link checked each link's physics when the model was built; a model edited afterwards is
+// checked here for non-finite numbers.)
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <tuple>
 #include <type_traits>
+
+#include <boost/hana/for_each.hpp>
 
 #include "ctga/algebra/multivector.hpp"
 #include "ctga/chains/passes.hpp"
@@ -28,7 +33,19 @@ constexpr bool finite_all(const T& x) noexcept {
     if constexpr (std::is_arithmetic_v<T>) return is_finite(x);
     else if constexpr (requires { x.R; x.t; }) return finite_all(x.R) && finite_all(x.t);
     else if constexpr (requires { x.X; x.pose; x.v; x.a; }) return finite_all(x.X) && finite_all(x.pose) && finite_all(x.v) && finite_all(x.a);
-    else if constexpr (requires { x.links; x.gravity; }) return finite_all(x.gravity);
+    else if constexpr (requires { x.links; x.gravity; }) {  // a model: every link's numbers and gravity
+        bool ok = finite_all(x.gravity);
+        boost::hana::for_each(x.links, [&](const auto& l) {
+            ok = ok && finite_all(l.placement) && finite_all(l.inertia) && finite_all(l.joint);
+        });
+        return ok;
+    } else if constexpr (requires { x.parameters(); }) {  // body_inertia: its ten parameters
+        return std::apply([](const auto&... p) { return (finite_all(p) && ...); }, x.parameters());
+    } else if constexpr (requires { x.u; }) {  // a joint's run-time axis
+        return finite_all(x.u);
+    } else if constexpr (std::is_empty_v<T>) {  // a joint without parameters
+        return true;
+    }
     else if constexpr (multivector_type<T>) {
         for (std::size_t i = 0; i < T::size(); ++i)
             if (!is_finite(x[i])) return false;

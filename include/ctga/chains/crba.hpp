@@ -32,7 +32,7 @@ CTGA_ALWAYS_INLINE constexpr void fill_rows(const model<Tree, T>& m, joint_matri
     using Jt = typename Tree::template joint_at<J>;
     [&]<std::size_t... L>(std::index_sequence<L...>) {
         ((H[Tree::v_offset[J] + L][col] = H[col][Tree::v_offset[J] + L] =
-              evaluation(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
+              pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
          ...);
     }(std::make_index_sequence<Jt::nv>{});
 }

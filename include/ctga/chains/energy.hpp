@@ -15,7 +15,7 @@
 
 namespace ctga::chains {
 
-struct kinetic_energy_t {
+struct tree_kinetic_energy_t {
     // ½ Σ v_i ∨ … : the kinetic energy ½ s̄ ∨ (N ∧ s) of §5, summed over the bodies.
     template <class Tree, class T>
     [[nodiscard]] constexpr T operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
@@ -31,9 +31,9 @@ struct kinetic_energy_t {
         return e;
     }
 };
-inline constexpr kinetic_energy_t kinetic_energy{};
+inline constexpr tree_kinetic_energy_t tree_kinetic_energy{};
 
-struct potential_energy_t {
+struct tree_potential_energy_t {
     // −Σ m_i g·c_i, c_i the world position of body i's centre of mass: with the body's pose (R, t)
     // and h = m c, m_i c_i = R h + m t.
     template <class Tree, class T>
@@ -51,6 +51,6 @@ struct potential_energy_t {
         return e;
     }
 };
-inline constexpr potential_energy_t potential_energy{};
+inline constexpr tree_potential_energy_t tree_potential_energy{};
 
 }  // namespace ctga::chains

@@ -90,6 +90,15 @@ struct unit_axis {
     vec3<T> u{T(0), T(0), T(1)};
 };
 
+}  // namespace joint_detail
+
+// Whether a joint's type leaves its axis to run time (revolute_about, prismatic_along): make_link
+// then takes the axis, and refuses one for every other joint, whose axis its type fixes.
+template <class J>
+inline constexpr bool has_run_time_axis = std::is_same_v<typename J::template parameters<double>, joint_detail::unit_axis<double>>;
+
+namespace joint_detail {
+
 // One degree of freedom along a single blade known at compile time (an axis joint): S = 1·Blade.
 template <fixed_string Blade>
 struct one_blade {

@@ -127,6 +127,14 @@ struct tree_motion {
         });
         return out;
     }
+    // every floating joint's eight numbers a unit motor up to rounding (near_unit)
+    [[nodiscard]] constexpr bool unit(const motor_type& q) const noexcept {
+        bool ok = true;
+        per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t, motor_type&) {
+            if constexpr (decltype(joint)::nq == 8) ok = ok && near_unit(motion_detail::motor_at(&q[qo]));
+        });
+        return ok;
+    }
     [[nodiscard]] constexpr bool finite(const motor_type& q, const screw_type& qd) const noexcept {
         return algorithm_detail::finite_all(q.x) && algorithm_detail::finite_all(qd.x);
     }
@@ -138,7 +146,7 @@ struct tree_motion {
 
     // The total energy: kinetic plus potential in the model's gravity.
     [[nodiscard]] constexpr T energy(const motor_type& q, const screw_type& qd) const noexcept {
-        return kinetic_energy(m, q.x, qd.x) + potential_energy(m, q.x);
+        return tree_kinetic_energy(m, q.x, qd.x) + tree_potential_energy(m, q.x);
     }
 
 private:

@@ -99,14 +99,6 @@ constexpr vec3<T> minus(const vec3<T>& g) noexcept {
 
 enum class pass { poses, velocities, accelerations };
 
-// The number of ancestors of body i (0 for a body on the world).
-template <class Tree>
-constexpr std::size_t depth_of(std::size_t i) {
-    std::size_t d = 0;
-    for (int k = Tree::parent[i]; k >= 0; k = Tree::parent[static_cast<std::size_t>(k)]) ++d;
-    return d;
-}
-
 // The forward pass of §4.1/§5.3 into k: maps, world poses (when Poses), velocities and
 // accelerations (as asked), then then(body, k) while the body's numbers are at hand (RNEA's
 // forces; the body's map k.X[i] is stored only after it). RNEA and ABA need no world poses:

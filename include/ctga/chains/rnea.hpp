@@ -41,7 +41,7 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
         const auto& L = m.template link<i>();
         if constexpr (J::nv > 0)
             [&]<std::size_t... K>(std::index_sequence<K...>) {
-                ((tau[Tree::v_offset[i] + K] = evaluation(f[i], J::template subspace<K, T>(L.joint))), ...);
+                ((tau[Tree::v_offset[i] + K] = pairing(f[i], J::template subspace<K, T>(L.joint))), ...);
             }(std::make_index_sequence<J::nv>{});
         if constexpr (p >= 0) f[p] = f[p] + transform(k.X[i], f[i]);
     });

@@ -135,23 +135,38 @@ constexpr bool unit(const vec3<T>& u) noexcept {
 }
 }  // namespace tree_detail
 
-// One body's parameters from its placement motor (renormalised; a zero or non-finite rotor part
-// is not_a_motor), its checked mass properties, and for revolute_about / prismatic_along its unit
-// axis (not_a_unit_axis when ‖u‖ ≠ 1 beyond rounding, non_finite for a NaN).
-template <joint Joint, class T>
+// One body's parameters from its placement motor, its checked mass properties, and for the
+// joints whose axis is a run-time parameter (revolute_about, prismatic_along: has_run_time_axis)
+// their unit axis, which the other joints do not take (their type fixes it):
+//   make_link<revolute_z>(placement, mass)
+//   make_link<revolute_about>(placement, mass, axis)
+// Reported: non_finite (a NaN or an infinity), not_a_motor (a placement that is not a unit motor
+// up to rounding, near_unit: it is renormalised, never silently replaced by another motion),
+// not_a_unit_axis (‖u‖ ≠ 1 beyond rounding), and the mass properties' own errors.
+template <joint Joint, class T, class... Axis>
 [[nodiscard]] constexpr checked<link_parameters<Joint, T>> make_link(const motor<T>& placement,
                                                                      const checked<mass_properties<T>>& mass,
-                                                                     const vec3<T>& axis = {T(0), T(0), T(1)}) noexcept {
-    const checked<motor<T>> g = renormalize_checked(placement);
+                                                                     const Axis&... axis) noexcept {
+    static_assert(has_run_time_axis<Joint> || sizeof...(Axis) == 0,
+                  "ctga::chains::make_link: this joint's axis is fixed by its type (revolute_x, prismatic_z, ...): "
+                  "pass no axis, or use revolute_about / prismatic_along for an axis given at run time");
+    static_assert(!has_run_time_axis<Joint> || sizeof...(Axis) == 1,
+                  "ctga::chains::make_link: revolute_about and prismatic_along need their unit axis (a vec3)");
+    static_assert(((std::is_same_v<Axis, vec3<T>>) && ...), "ctga::chains::make_link: the axis is a vec3 of the model's scalar type");
+    if (!all_finite(placement[0], placement[1], placement[2], placement[3], placement[4], placement[5], placement[6], placement[7]))
+        return {{}, error_code::non_finite};
+    if (!near_unit(placement)) return {{}, error_code::not_a_motor};
+    const checked<motor<T>> g = renormalize_checked(placement);  // the rounding residue only
     if (!g) return {{}, g.error};
     if (!mass) return {{}, mass.error};
     link_parameters<Joint, T> out;
     out.placement = map_of(*g);
     out.inertia = body_inertia_of(*mass);
-    if constexpr (std::is_same_v<typename Joint::template parameters<T>, joint_detail::unit_axis<T>>) {
-        if (!all_finite(axis[0], axis[1], axis[2])) return {{}, error_code::non_finite};
-        if (!tree_detail::unit(axis)) return {{}, error_code::not_a_unit_axis};
-        out.joint.u = axis;
+    if constexpr (has_run_time_axis<Joint> && sizeof...(Axis) == 1) {
+        const vec3<T>& u = (axis, ...);
+        if (!all_finite(u[0], u[1], u[2])) return {{}, error_code::non_finite};
+        if (!tree_detail::unit(u)) return {{}, error_code::not_a_unit_axis};
+        out.joint.u = u;
     }
     return {out, error_code::none};
 }

@@ -67,46 +67,39 @@ template <class N>
 struct node_shape {
     static constexpr bool known = false;
 };
-template <std::size_t I, auto L>
-struct node_shape<arg<I, L>> {
+// arg and leaf: operand I, of layout L
+template <node_kind Kind, std::size_t I, auto L>
+struct leaf_shape {
     static constexpr bool known = true;
-    static constexpr node_kind kind = node_kind::argument;
+    static constexpr node_kind kind = Kind;
     static constexpr std::size_t index = I;
     static constexpr auto layout = L;
     using children = type_list<>;
 };
 template <std::size_t I, auto L>
-struct node_shape<leaf<I, L>> {
-    static constexpr bool known = true;
-    static constexpr node_kind kind = node_kind::data_leaf;
-    static constexpr std::size_t index = I;
-    static constexpr auto layout = L;
-    using children = type_list<>;
-};
+struct node_shape<arg<I, L>> : leaf_shape<node_kind::argument, I, L> {};
+template <std::size_t I, auto L>
+struct node_shape<leaf<I, L>> : leaf_shape<node_kind::data_leaf, I, L> {};
 template <auto L, auto C>
 struct node_shape<constant<L, C>> {
     static constexpr bool known = true;
     static constexpr node_kind kind = node_kind::constant;
     using children = type_list<>;
 };
-template <class Rule, class X, class Y>
-struct node_shape<product<Rule, X, Y>> {
+// product and looped: a bilinear rule's two operands, P the node template of the kind
+template <node_kind Kind, template <class, class, class> class P, class Rule, class X, class Y>
+struct bilinear_shape {
     static constexpr bool known = true;
-    static constexpr node_kind kind = node_kind::product;
+    static constexpr node_kind kind = Kind;
     using rule = Rule;
     using children = type_list<X, Y>;
     template <class A, class B>
-    using with = product<Rule, A, B>;
+    using with = P<Rule, A, B>;
 };
 template <class Rule, class X, class Y>
-struct node_shape<looped<Rule, X, Y>> {
-    static constexpr bool known = true;
-    static constexpr node_kind kind = node_kind::looped;
-    using rule = Rule;
-    using children = type_list<X, Y>;
-    template <class A, class B>
-    using with = looped<Rule, A, B>;
-};
+struct node_shape<product<Rule, X, Y>> : bilinear_shape<node_kind::product, product, Rule, X, Y> {};
+template <class Rule, class X, class Y>
+struct node_shape<looped<Rule, X, Y>> : bilinear_shape<node_kind::looped, looped, Rule, X, Y> {};
 template <class Rule, class X>
 struct node_shape<map<Rule, X>> {
     static constexpr bool known = true;

@@ -11,14 +11,14 @@
 //   make_line(p, q), make_line(p, v)   the line from point p to point q, or through p along direction v
 #pragma once
 
-#include <cassert>
-#include <limits>
+#include <array>
 #include <type_traits>
 
 #include "ctga/geometry/pga_operations.hpp"
 #include "ctga/geometry/pga_types.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/unit_direction.hpp"
 
 namespace ctga::pga {
 
@@ -48,42 +48,27 @@ template <class T = double>
 }
 
 // The rotation by angle θ (radians) about the axis through the origin along (x, y, z), which
-// need not be unit: +θ turns counter-clockwise seen from the tip of the axis (right-hand rule),
-// so make_rotor(π/2, 0, 0, 1) takes (1, 0, 0) to (0, 1, 0). Or a failure:
-//   error_code::non_finite       θ or an axis component is NaN or ±∞;
-//   error_code::not_a_unit_axis  the axis is zero: it has no direction to make a unit vector of.
-// The axis is scaled by its largest component before its length is taken, so that tiny or huge
-// axes neither underflow to zero nor overflow.
+// need not be unit (support/unit_direction.hpp): +θ turns counter-clockwise seen from the tip of
+// the axis (right-hand rule), so make_rotor(π/2, 0, 0, 1) takes (1, 0, 0) to (0, 1, 0). Or a
+// failure: error_code::non_finite (θ or an axis component is NaN or ±∞), zero_direction (the
+// zero axis).
 template <class T = double>
 [[nodiscard]] constexpr checked<rotor<T>> make_rotor_checked(std::type_identity_t<T> angle, std::type_identity_t<T> x,
                                                              std::type_identity_t<T> y,
                                                              std::type_identity_t<T> z) noexcept {
-    if (!all_finite(angle, x, y, z)) return {rotor<T>{}, error_code::non_finite};
-    const auto magnitude = [](const T& c) { return c < T(0) ? -c : c; };
-    T m = magnitude(x);
-    if (magnitude(y) > m) m = magnitude(y);
-    if (magnitude(z) > m) m = magnitude(z);
-    if (!(m > T(0))) return {rotor<T>{}, error_code::not_a_unit_axis};
-    const T ux = x / m, uy = y / m, uz = z / m;
-    const T length = math::sqrt(ux * ux + uy * uy + uz * uz);  // in [1, √3]
+    if (!is_finite(angle)) return {rotor<T>{}, error_code::non_finite};
+    const checked<std::array<T, 3>> u = unit_direction(x, y, z);
+    if (!u) return {rotor<T>{}, u.error};
     const auto half = math::cos_sin(angle / T(2));
-    const T k = -half.sin / length;
-    return {rotor<T>{half.cos, k * ux, k * uy, k * uz}, error_code::none};
+    return {rotor<T>{half.cos, -half.sin * u.value[0], -half.sin * u.value[1], -half.sin * u.value[2]}, error_code::none};
 }
 
-// make_rotor_checked for an axis known to be non-zero and finite. Asserts in debug builds when it
-// is not (see make_rotor_checked); in release builds it then returns a rotor of NaNs, so that the
-// failure shows in every later result instead of passing for a rotation (as ctga::renormalize).
+// make_rotor_checked for an axis known to be non-zero and finite (value_or_nan: asserts in debug
+// builds, a rotor of NaNs in release builds, never a rotor that looks fine).
 template <class T = double>
 [[nodiscard]] constexpr rotor<T> make_rotor(std::type_identity_t<T> angle, std::type_identity_t<T> x,
                                             std::type_identity_t<T> y, std::type_identity_t<T> z) noexcept {
-    const checked<rotor<T>> r = make_rotor_checked<T>(angle, x, y, z);
-    assert(r && "ctga::pga::make_rotor: zero or non-finite axis, or non-finite angle; use make_rotor_checked");
-    if (!r) {
-        const T nan = std::numeric_limits<T>::quiet_NaN();
-        return rotor<T>{nan, nan, nan, nan};
-    }
-    return r.value;
+    return value_or_nan(make_rotor_checked<T>(angle, x, y, z));
 }
 
 // The line through p and q, directed from p to q: join(p, q), direction w_p q − w_q p (q − p for

@@ -4,7 +4,7 @@
 // point's four blades, or the program does not compile. Signs and orientations: pga.hpp.
 //
 //   sandwich(M, x)     M x M̃, in the type of x (point → point, line → line, plane → plane, ...)
-//   join(a, b, ...)    a ∨ b ∨ ... (the regressive product &): the smallest element containing both
+//   join(a, b, ...)    a ∨ b ∨ ... (the shuffle product &, elsewhere called regressive): the smallest element containing both
 //   meet(a, b, ...)    a ∧ b ∧ ... (the exterior product ^): the largest element both contain
 //   norm(x), normalized(x), squared_norm(x)
 //

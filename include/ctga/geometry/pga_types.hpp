@@ -20,7 +20,7 @@
 
 namespace ctga::pga {
 
-// e0² = 0, e1² = e2² = e3² = +1, in this order (the basis order of the regressive product: the
+// e0² = 0, e1² = e2² = e3² = +1, in this order (the basis order of the shuffle product ∨: the
 // orientation of join, pga.hpp).
 using algebra = ctga::algebra<"e0 e1 e2 e3", 0, 1, 1, 1>;
 

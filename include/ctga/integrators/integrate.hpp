@@ -4,7 +4,8 @@
 //   auto run = ctga::integrate(ctga::lie_rk4{}, model, {g0, s0}, 1e-3, 10'000);
 //   if (!run) std::puts(ctga::describe(run.error));   // the state is the last good one
 //
-// A non-finite step size or initial state, a step producing a NaN or an infinity (a blow-up of
+// A non-finite step size or initial state, an initial pose that is not a unit motor up to
+// rounding (not_a_motor: integrating it would move a shape that no rigid motion gives), a step producing a NaN or an infinity (a blow-up of
 // an unstable method, a wrench returning NaN) and an implicit step that does not converge all
 // stop the run and are reported with the number of steps completed: a corrupted state is never
 // returned as if it were a result.
@@ -37,6 +38,7 @@ template <class Method, motion_model M, class Observer = ignore_steps>
                                                           const typename M::scalar_type& h, long long steps,
                                                           Observer&& observe = {}) {
     if (!is_finite(h) || !model.finite(x.g, x.s)) return {x, 0, error_code::non_finite};
+    if (!model.unit(x.g)) return {x, 0, error_code::not_a_motor};  // a pose that is no rigid motion
     for (long long n = 0; n < steps; ++n) {
         const checked<state_of<M>> next = method.step(model, x, h);
         if (!next) return {x, n, next.error};

@@ -10,6 +10,7 @@
 //   compose(g, h)        the motor product g h
 //   bracket(a, b)        ½(a b − b a), the Lie bracket of screws (§3)
 //   renormalize(g)       the nearest unit motor to a drifted one
+//   unit(g)              g is a unit motor up to rounding (near_unit, motor.hpp): a pose
 //   finite(g, s)         every number finite
 //   magnitude(z)         max |component| of a screw (for convergence tests)
 // and its motors and screws form vector spaces under +, − and multiplication by a scalar (as
@@ -42,6 +43,7 @@ concept motion_model = requires(const M& m, const typename M::motor_type& g, con
     { m.compose(g, g) } -> std::convertible_to<typename M::motor_type>;
     { m.bracket(s, s) } -> std::convertible_to<typename M::screw_type>;
     { m.renormalize(g) } -> std::convertible_to<typename M::motor_type>;
+    { m.unit(g) } -> std::convertible_to<bool>;
     { m.finite(g, s) } -> std::convertible_to<bool>;
     { m.magnitude(s) } -> std::convertible_to<typename M::scalar_type>;
     requires std::constructible_from<typename M::motor_type, decltype(g + h * g)>;

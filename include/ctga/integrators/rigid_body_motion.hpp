@@ -89,6 +89,7 @@ struct rigid_body_motion {
         return ctga::bracket(a, b);
     }
     [[nodiscard]] constexpr motor<T> renormalize(const motor<T>& g) const noexcept { return ctga::renormalize(g); }
+    [[nodiscard]] constexpr bool unit(const motor<T>& g) const noexcept { return near_unit(g); }
     [[nodiscard]] constexpr bool finite(const motor<T>& g, const screw<T>& s) const noexcept {
         for (std::size_t i = 0; i < 8; ++i)
             if (!is_finite(g[i])) return false;

@@ -116,15 +116,6 @@ template <class T>
              N.m}};
 }
 
-// The same element with its 36 blades stored (the general inertia of inertia.hpp).
-template <class T>
-[[nodiscard]] constexpr inertia<T> to_inertia(const articulated_inertia<T>& N) noexcept {
-    mat6<T> X{};
-    for (std::size_t i = 0; i < 6; ++i)
-        for (std::size_t j = 0; j < 6; ++j) X[i][j] = N(i, j);
-    return inertia_from_matrix(X);
-}
-
 // The joint's share removed (Featherstone eq. 7.41): N − U Uᵀ / D for U = N S and D = U(S) of a
 // one-degree-of-freedom joint, given U and 1/D. What the parent sees through the joint (27m 21a).
 // (N − U Uᵀ/D) S = U − U D/D = 0: when S is the single blade of screw component Null (an axis

@@ -124,7 +124,7 @@ struct body_mobility {
         return t * (bar(t) * about_centre(inv_m, jxx, jyy, jzz, jxy, jxz, jyz) * conj(bar(t))) * conj(t);
     };
     // The velocity of a co-screw P, t (E ∨ (M_c ∧ (t̄* P t̄))) t* (24m 18a): as a formula's body
-    // (velocity_of, for larger formulas) and as the formula velocity(M, P) runs.
+    // (velocity_of, for larger formulas) and as the formula velocity_from(M, P) runs.
     static constexpr auto velocity_of = [](auto P, auto inv_m, auto cx, auto cy, auto cz, auto jxx, auto jyy, auto jzz,
                                            auto jxy, auto jxz, auto jyz) {
         const auto t = to_centre(cx, cy, cz);

@@ -26,10 +26,10 @@ inline constexpr auto Q0 = cl062::basis<"a2a3e1e"> + cl062::basis<"a3a1e2e"> + c
                            cl062::basis<"a1ae2e3"> + cl062::basis<"a2ae3e1"> + cl062::basis<"a3ae1e2">;
 }  // namespace invariants
 
-// §5: the evaluation (pairing) P(s) = P ∨ (Q0 ∧ s) = ω·l + v·p, a number. s is a screw of
-// Cl(0,3,1) or lifted.
-inline constexpr operation evaluation{formula([](auto P, auto s) { return P & (invariants::Q0 ^ lift(s)); }),
-                                      scalar_over<1>};
+// §5: the pairing of a co-screw with a screw (the paper's "evaluation map"),
+// P(s) = P ∨ (Q0 ∧ s) = ω·l + v·p, a number. s is a screw of Cl(0,3,1) or lifted.
+inline constexpr operation pairing{formula([](auto P, auto s) { return P & (invariants::Q0 ^ lift(s)); }),
+                                   scalar_over<1>};
 
 // §6: the coadjoint action {s, P} = ½(s̄P − Ps̄) = (ω×l + v×p, ω×p), 18m 12a.
 inline constexpr operation coadjoint{

@@ -57,7 +57,7 @@ template <class T, class Inertia, class Mobility>
                                                                  const wrench<T>& W) noexcept {
     const coscrew<T> P = momentum(N, s);
     const coscrew<T> rhs = W - coadjoint(s, P);
-    return velocity(M, rhs);
+    return velocity_from(M, rhs);
 }
 
 // A rigid body's acceleration, from N and M by their ten parameters each (body.Nb, body.Mb): the
@@ -79,7 +79,7 @@ struct state_rate {
 template <class T>
 [[nodiscard]] constexpr state_rate<T> fixed_frame_rates(const rigid_body<T>& body, const motor<T>& g, const screw<T>& s,
                                                         const wrench<T>& W) noexcept {
-    const mass_properties<T> in_space = transform(map_of(g), body.mass);
+    const mass_properties<T> in_space = transform(map_of(g), body.properties);
     const screw<T> s_dot = acceleration(inertia_of(in_space), mobility_of(in_space), s, W);
     return {half * s * g, s_dot};
 }

@@ -40,10 +40,6 @@ template <class T>
     for (int j = 0; j < 3; ++j) out[j] = m[0][j] * x[0] + m[1][j] * x[1] + m[2][j] * x[2];
     return out;
 }
-template <class T>
-[[nodiscard]] constexpr mat3<T> transpose(const mat3<T>& m) noexcept {
-    return {{{m[0][0], m[1][0], m[2][0]}, {m[0][1], m[1][1], m[2][1]}, {m[0][2], m[1][2], m[2][2]}}};
-}
 // R S Rᵀ for a symmetric S, computing the upper triangle and mirroring it (45m 30a).
 template <class T>
 [[nodiscard]] constexpr mat3<T> rotate_symmetric(const mat3<T>& R, const mat3<T>& S) noexcept {

@@ -44,10 +44,11 @@ namespace inertia_detail {
 inline constexpr auto velocity_formula = [](auto M, auto P) { return invariants::E & (M ^ P); };
 using velocity_operation = operation<std::remove_const_t<decltype(velocity_formula)>, lowered_screw_t>;
 }  // namespace inertia_detail
-// velocity(M, P) for any mobility element; a body_mobility and a co-screw take the form about the
-// centre of mass, t (E ∨ (M_c ∧ (t̄* P t̄))) t* (body_mobility), the same s at 24m 18a. The lazy
-// velocity.formula is E ∨ (M ∧ P) for every M.
-struct velocity_t : inertia_detail::velocity_operation {
+// velocity_from(M, P): the velocity s = E ∨ (M ∧ P) of a momentum P (§5), for any mobility
+// element; a body_mobility and a co-screw take the form about the centre of mass,
+// t (E ∨ (M_c ∧ (t̄* P t̄))) t* (body_mobility), the same s at 24m 18a. The lazy
+// velocity_from.formula is E ∨ (M ∧ P) for every M.
+struct velocity_from_t : inertia_detail::velocity_operation {
     using inertia_detail::velocity_operation::operator();
     // A rigid body's mobility by its ten parameters: t (E ∨ (M_c ∧ (t̄* P t̄))) t* (body_mobility)
     // in coordinates, P = (l, p): l' = l − c × p (P about the centre of mass), ω = J l', v' = p/m
@@ -68,6 +69,6 @@ struct velocity_t : inertia_detail::velocity_operation {
         return screw<T>{w[0], w[1], w[2], inv_m * p[0] + cw[0], inv_m * p[1] + cw[1], inv_m * p[2] + cw[2]};
     }
 };
-inline constexpr velocity_t velocity{{formula(inertia_detail::velocity_formula), lowered_screw_t{}}};
+inline constexpr velocity_from_t velocity_from{{formula(inertia_detail::velocity_formula), lowered_screw_t{}}};
 
 }  // namespace ctga

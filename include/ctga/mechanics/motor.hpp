@@ -27,6 +27,7 @@
 #include "ctga/support/checked.hpp"
 #include "ctga/support/inline.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/unit_direction.hpp"
 
 namespace ctga {
 
@@ -38,16 +39,29 @@ using translator = cl031::mv<T, "1", "e1e", "e2e", "e3e">;
 template <class T = double>
 using motor = cl031::mv<T, "1", "e2e3", "e3e1", "e1e2", "ee1e2e3", "e1e", "e2e", "e3e">;
 
-// The rotation by angle θ about the unit axis u (right-hand rule).
+// The rotor turning by angle θ about the axis (x, y, z) through the origin, right-handed:
+// cos(θ/2) + sin(θ/2)(u_x e2e3 + u_y e3e1 + u_z e1e2), u the axis made unit (any non-zero vector
+// gives its direction; a unit axis comes back unchanged up to rounding), so the rotor is always a
+// unit rotor. Reported: non_finite (a NaN or an infinity), zero_direction (the zero axis).
 template <class T>
-[[nodiscard]] constexpr rotor<T> rotation(const T& ux, const T& uy, const T& uz, const T& theta) noexcept {
-    const T c = math::cos(theta / T(2)), s = math::sin(theta / T(2));
-    return rotor<T>{c, s * ux, s * uy, s * uz};
+[[nodiscard]] constexpr checked<rotor<T>> make_rotor_checked(const T& theta, const T& x, const T& y, const T& z) noexcept {
+    if (!is_finite(theta)) return {rotor<T>{}, error_code::non_finite};
+    const checked<std::array<T, 3>> u = unit_direction(x, y, z);
+    if (!u) return {rotor<T>{}, u.error};
+    const auto half = math::cos_sin(theta / T(2));
+    return {rotor<T>{half.cos, half.sin * u.value[0], half.sin * u.value[1], half.sin * u.value[2]}, error_code::none};
 }
 
-// The translation by (tx, ty, tz).
+// make_rotor_checked for an axis known to be finite and non-zero (value_or_nan: asserts in debug
+// builds, a rotor of NaNs in release builds, never a rotor that looks fine).
 template <class T>
-[[nodiscard]] constexpr translator<T> translation(const T& tx, const T& ty, const T& tz) noexcept {
+[[nodiscard]] constexpr rotor<T> make_rotor(const T& theta, const T& x, const T& y, const T& z) noexcept {
+    return value_or_nan(make_rotor_checked(theta, x, y, z));
+}
+
+// The translator moving by (tx, ty, tz): 1 + ½(tx e1e + ty e2e + tz e3e).
+template <class T>
+[[nodiscard]] constexpr translator<T> make_translator(const T& tx, const T& ty, const T& tz) noexcept {
     return translator<T>{T(1), tx / T(2), ty / T(2), tz / T(2)};
 }
 
@@ -82,6 +96,21 @@ template <class T>
 [[nodiscard]] constexpr motor_defect<T> unit_defect(const motor<T>& g) noexcept {
     return {g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g[3] * g[3] - T(1),
             g[0] * g[4] + g[1] * g[5] + g[2] * g[6] + g[3] * g[7]};
+}
+
+// Whether g is a unit motor up to rounding: α·α − 1 within √ε, and α0β0 + α·β within √ε·max(1, |β|)
+// (β carries the translation's length). A motor further off was not made by rotors and
+// translators (or an integrator's drift) but written by hand wrongly: renormalising it would
+// silently replace it by another rigid motion, so the functions that take a pose from a user
+// (chains::make_link, integrate) refuse it (not_a_motor) instead.
+template <class T>
+[[nodiscard]] constexpr bool near_unit(const motor<T>& g) noexcept {
+    const motor_defect<T> d = unit_defect(g);
+    const T tolerance = math::sqrt(std::numeric_limits<T>::epsilon());
+    const T beta = math::sqrt(g[4] * g[4] + g[5] * g[5] + g[6] * g[6] + g[7] * g[7]);
+    const auto magnitude = [](const T& x) { return x < T(0) ? -x : x; };
+    return all_finite(d.alpha_norm, d.alpha_beta) && magnitude(d.alpha_norm) <= tolerance &&
+           magnitude(d.alpha_beta) <= tolerance * (beta > T(1) ? beta : T(1));
 }
 
 // The inverse of a unit motor: g⁻¹ = g* because g g* = 1 (§3). Exact (sign changes only): the
@@ -133,13 +162,7 @@ template <class T>
 // that the failure shows in every later result instead of passing for a rigid motion.
 template <class T>
 [[nodiscard]] constexpr motor<T> renormalize(const motor<T>& g) noexcept {
-    const checked<motor<T>> r = renormalize_checked(g);
-    assert(r && "ctga::renormalize: not a motor (zero or non-finite rotor part); use renormalize_checked");
-    if (!r) {
-        const T nan = std::numeric_limits<T>::quiet_NaN();
-        return motor<T>{nan, nan, nan, nan, nan, nan, nan, nan};
-    }
-    return r.value;
+    return value_or_nan(renormalize_checked(g));
 }
 
 // ---- the linear map of a motor (§2) ------------------------------------------------------

@@ -16,11 +16,11 @@ namespace ctga {
 // equations of motion (acceleration(body, s, W): 24m for the momentum, 24m for the solve).
 template <class T = double>
 struct rigid_body {
-    mass_properties<T> mass;  // in the body frame
-    rigid_inertia<T> N;       // inertia_of(mass)
-    mobility<T> M;            // mobility_of(mass) = N⁻¹
-    body_inertia<T> Nb;       // N by (m, h = m c, I_o): body_inertia_of(mass)
-    body_mobility<T> Mb;      // M by (1/m, c, J = I_c⁻¹): body_mobility_of(mass)
+    mass_properties<T> properties;  // m, c, I_c in the body frame
+    rigid_inertia<T> N;             // inertia_of(properties)
+    mobility<T> M;                  // mobility_of(properties) = N⁻¹
+    body_inertia<T> Nb;             // N by (m, h = m c, I_o): body_inertia_of(properties)
+    body_mobility<T> Mb;            // M by (1/m, c, J = I_c⁻¹): body_mobility_of(properties)
 };
 
 template <class T>

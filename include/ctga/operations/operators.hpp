@@ -4,7 +4,7 @@
 //
 // Operators follow the common geometric-algebra convention:
 //   x * y   geometric product          x ^ y   exterior product ∧
-//   x & y   shuffle/regressive ∨ (§4)  x | y   left contraction ⌋
+//   x & y   shuffle product ∨ (§4)     x | y   left contraction ⌋
 //   ~x      reverse                    -x, x + y, x - y, s * x, x * s, x / s, half * x
 // C++ gives ^, & and | lower precedence than + and ==: write the paper's A ∨ (N ∧ s) as
 // A & (N ^ s), with the parentheses the paper has anyway.
@@ -35,7 +35,7 @@ struct bilinear_product {
 };
 inline constexpr bilinear_product<rules::geometric> gp{};
 inline constexpr bilinear_product<rules::exterior> wedge{};
-inline constexpr bilinear_product<rules::regressive> vee{};
+inline constexpr bilinear_product<rules::shuffle> shuffle{};
 inline constexpr bilinear_product<rules::left_contraction> left_contraction{};
 inline constexpr bilinear_product<rules::right_contraction> right_contraction{};
 inline constexpr bilinear_product<rules::scalar> scalar_product{};
@@ -45,7 +45,7 @@ template <operand X, operand Y>
 template <operand X, operand Y>
 [[nodiscard]] constexpr auto operator^(X&& x, Y&& y) noexcept { return wedge(std::forward<X>(x), std::forward<Y>(y)); }
 template <operand X, operand Y>
-[[nodiscard]] constexpr auto operator&(X&& x, Y&& y) noexcept { return vee(std::forward<X>(x), std::forward<Y>(y)); }
+[[nodiscard]] constexpr auto operator&(X&& x, Y&& y) noexcept { return shuffle(std::forward<X>(x), std::forward<Y>(y)); }
 template <operand X, operand Y>
 [[nodiscard]] constexpr auto operator|(X&& x, Y&& y) noexcept {
     return left_contraction(std::forward<X>(x), std::forward<Y>(y));

@@ -195,7 +195,7 @@ inline term scalar_term(blade_mask a, blade_mask b, int n, const int* squares) {
     return grade_part_of_product(a, b, 0, n, squares);
 }
 
-// Shuffle (regressive) product, literally the Grassmann-Cayley definition of the paper's §4.
+// Shuffle product, literally the Grassmann-Cayley definition of the paper's §4.
 // For b = b_1 ∧ ... ∧ b_j and c = c_1 ∧ ... ∧ c_k (here: the generators of the canonical
 // blades, ascending) with j + k >= n:
 //
@@ -528,9 +528,9 @@ multivector<Alg, T> wedge(const multivector<Alg, T>& x, const multivector<Alg, T
     return detail::apply_table(detail::table_for<Alg, detail::product_kind::exterior>(), x, y);
 }
 
-// Shuffle (regressive, Grassmann-Cayley) product x ∨ y of the paper's §4; metric-free.
+// Shuffle (Grassmann-Cayley) product x ∨ y of the paper's §4; metric-free.
 template <class Alg, class T>
-multivector<Alg, T> vee(const multivector<Alg, T>& x, const multivector<Alg, T>& y) {
+multivector<Alg, T> shuffle(const multivector<Alg, T>& x, const multivector<Alg, T>& y) {
     return detail::apply_table(detail::table_for<Alg, detail::product_kind::shuffle>(), x, y);
 }
 

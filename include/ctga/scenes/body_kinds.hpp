@@ -350,6 +350,7 @@ struct body_motion {
     [[nodiscard]] constexpr motor_type renormalize(const motor_type& g) const noexcept {
         return project<motor_type>(ctga::renormalize(motor<T>(g)));
     }
+    [[nodiscard]] constexpr bool unit(const motor_type& g) const noexcept { return near_unit(motor<T>(g)); }
     [[nodiscard]] constexpr bool finite(const motor_type& g, const screw_type& s) const noexcept {
         for (std::size_t i = 0; i < g.size(); ++i)
             if (!is_finite(g[i])) return false;

@@ -217,6 +217,11 @@ struct scene_model<springs<Springs...>, Models...> {
     [[nodiscard]] constexpr motor_type renormalize(const motor_type& g) const {
         return each<motor_type>([](const auto& b, const auto& gi) { return b.renormalize(gi); }, g);
     }
+    [[nodiscard]] constexpr bool unit(const motor_type& g) const {
+        return boost::hana::unpack(boost::hana::zip(bodies, g.parts), [](const auto&... row) {
+            return (boost::hana::unpack(row, [](const auto& b, const auto& gi) { return b.unit(gi); }) && ...);
+        });
+    }
     [[nodiscard]] constexpr bool finite(const motor_type& g, const screw_type& s) const {
         return boost::hana::unpack(boost::hana::zip(bodies, g.parts, s.parts), [](const auto&... row) {
             return (boost::hana::unpack(row, [](const auto& b, const auto& gi, const auto& si) { return b.finite(gi, si); }) &&
@@ -233,11 +238,12 @@ struct scene_model<springs<Springs...>, Models...> {
     }
 };
 
-// A scene: its moving bodies as one model, and its static and kinematic bodies as they are.
-template <class Moving, class Fixed>
+// A scene: its moving bodies as one model, and the bodies whose motion is prescribed (static and
+// kinematic ones) as they are.
+template <class Moving, class Prescribed>
 struct scene {
-    Moving moving;  // a scene_model
-    Fixed fixed;    // a hana::tuple of static and kinematic bodies
+    Moving moving;          // a scene_model
+    Prescribed prescribed;  // a hana::tuple of static and kinematic bodies
 
     [[nodiscard]] constexpr const Moving& model() const noexcept { return moving; }
     // The scene's state from one motion_state per moving body, in order.
@@ -256,7 +262,7 @@ template <class... Springs, class... Bodies>
     const auto moving = boost::hana::filter(all, [](const auto& b) {
         return boost::hana::bool_c<is_moving_body<std::remove_cvref_t<decltype(b)>>>;
     });
-    const auto fixed = boost::hana::remove_if(all, [](const auto& b) {
+    const auto prescribed = boost::hana::remove_if(all, [](const auto& b) {
         return boost::hana::bool_c<is_moving_body<std::remove_cvref_t<decltype(b)>>>;
     });
     using model_t = decltype(boost::hana::unpack(moving, [](const auto&... m) {
@@ -264,7 +270,7 @@ template <class... Springs, class... Bodies>
     }));
     const model_t model =
         boost::hana::unpack(moving, [&](const auto&... m) { return model_t{boost::hana::make_tuple(m...), coupling}; });
-    return scene<model_t, std::remove_cvref_t<decltype(fixed)>>{model, fixed};
+    return scene<model_t, std::remove_cvref_t<decltype(prescribed)>>{model, prescribed};
 }
 template <class... Bodies>
 [[nodiscard]] constexpr auto make_scene(const Bodies&... bodies) {

@@ -12,6 +12,9 @@
 #pragma once
 
 #include <cassert>
+#include <cstddef>
+#include <limits>
+#include <type_traits>
 
 #include "ctga/support/math.hpp"
 
@@ -27,15 +30,13 @@ enum class error_code : unsigned char {
     triangle_inequality,    // principal moments with I_i > I_j + I_k: no mass distribution has them
     not_a_rotation,         // the 3×3 block of a homogeneous matrix is not orthonormal with det +1
     not_homogeneous,        // the bottom row of a homogeneous matrix is not (0, 0, 0, 1)
-    not_a_motor,            // g g* = 1 fails beyond repair (zero or non-finite rotor part)
+    not_a_motor,            // g g* = 1 fails beyond rounding (or the rotor part is zero)
     not_a_rigid_inertia,    // a 6×6 inertia without the form [[I, m Ĉ], [m Ĉᵀ, m 1]] of §2
     not_a_unit_axis,        // a joint axis u with ‖u‖ ≠ 1 beyond rounding
+    zero_direction,         // an axis or direction given as the zero vector
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
-
-// The name of error_code before it also reported failed computations.
-using input_error [[deprecated("ctga::input_error is now ctga::error_code")]] = error_code;
 
 [[nodiscard]] constexpr const char* describe(error_code e) noexcept {
     switch (e) {
@@ -51,7 +52,8 @@ using input_error [[deprecated("ctga::input_error is now ctga::error_code")]] = 
         case error_code::not_a_rigid_inertia:
             return "ctga: not a rigid body's inertia (mass block m*1, coupling block m*C antisymmetric)";
         case error_code::not_a_unit_axis: return "ctga: a joint axis must be a unit vector";
-        case error_code::not_a_motor: return "ctga: not a rigid motion (the rotor part is zero or non-finite)";
+        case error_code::zero_direction: return "ctga: an axis must have a direction (it is the zero vector)";
+        case error_code::not_a_motor: return "ctga: not a rigid motion (g g* = 1 fails beyond rounding, or the rotor part is zero)";
         case error_code::did_not_converge:
             return "ctga: the implicit step did not converge (the step is too large for the angular velocity)";
     }
@@ -70,5 +72,18 @@ struct checked {
     }
     [[nodiscard]] constexpr const V* operator->() const noexcept { return &**this; }
 };
+
+// The value of a check the caller knows succeeds (renormalize, make_rotor: the unchecked forms of
+// the *_checked functions). A failure asserts in debug builds; in release builds it gives V with
+// every component NaN, so that it shows in every later result instead of passing for a value.
+// V: a type with size() and operator[] (a multivector).
+template <class V>
+[[nodiscard]] constexpr V value_or_nan(const checked<V>& r) noexcept {
+    assert(r.error == error_code::none && "ctga: the unchecked form of a *_checked function failed; call the checked one");
+    if (r.error == error_code::none) return r.value;
+    V out{};
+    for (std::size_t i = 0; i < out.size(); ++i) out[i] = std::numeric_limits<std::remove_cvref_t<decltype(out[i])>>::quiet_NaN();
+    return out;
+}
 
 }  // namespace ctga

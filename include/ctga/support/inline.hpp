@@ -6,9 +6,6 @@
 
 #if defined(__GNUC__) || defined(__clang__)
 #define CTGA_ALWAYS_INLINE [[gnu::always_inline]] inline
-// after a lambda's parameter list: [&](auto body) CTGA_LAMBDA_INLINE { … }
-#define CTGA_LAMBDA_INLINE __attribute__((always_inline))
 #else
 #define CTGA_ALWAYS_INLINE inline
-#define CTGA_LAMBDA_INLINE
 #endif

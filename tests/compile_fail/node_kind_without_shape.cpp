@@ -1,4 +1,4 @@
-// EXPECT: shape_for<ctga::expr::walker::relabel, .*negated.*is not a node kind|is not a node kind.*shape_for<ctga::expr::walker::relabel, .*negated
+// EXPECT: refuse_unknown<ctga::expr::walker::relabel, [^>]*negated.*not a node kind|not a node kind.*refuse_unknown<ctga::expr::walker::relabel, [^>]*negated
 // A node kind added to the engine without its node_shape (expr/nodes.hpp): the first walker that
 // meets it (here relabel, which renumbers the right operand's leaves of a combination) stops with
 // a compile error naming itself and the type, instead of passing the node through unchanged.

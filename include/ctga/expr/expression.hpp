@@ -57,25 +57,32 @@ struct scalar_leaf {  // a runtime scalar
 };
 
 // Renaming the leaves of a node tree: Map::on_leaf<I, L> and Map::on_arg<I, L> give each leaf's
-// new node; every other node is rebuilt around its renamed children (nodes.hpp, node_shape).
-template <class N, class Map>
+// new node; every other node is rebuilt around its renamed children (nodes.hpp, node_shape). It
+// runs on every node of every combination, so it dispatches by partial specialisation on the
+// node's kind (one instantiation per node).
+template <class N, class Map, node_kind K = node_shape<N>::kind, class Children = typename node_shape<N>::children>
 struct relabel;
 template <class N, class Map>
 using relabel_t = typename relabel<N, Map>::type;
-template <class Map>
-struct relabel_children {
-    template <class C>
-    using on = relabel_t<C, Map>;
+template <class N, class Map, node_kind K, class... C>
+struct relabel<N, Map, K, type_list<C...>> {
+    using type = typename node_shape<N>::template with<relabel_t<C, Map>...>;
 };
 template <class N, class Map>
-struct relabel {
-    static constexpr node_kind kind = shape_for<walker::relabel, N>::kind;
-    static constexpr auto pick() {
-        if constexpr (kind == node_kind::data_leaf) return typename Map::template on_leaf<node_shape<N>::index, node_shape<N>::layout>{};
-        else if constexpr (kind == node_kind::argument) return typename Map::template on_arg<node_shape<N>::index, node_shape<N>::layout>{};
-        else return rebuild_t<walker::relabel, N, relabel_children<Map>>{};
-    }
-    using type = decltype(pick());
+struct relabel<N, Map, node_kind::data_leaf, type_list<>> {
+    using type = typename Map::template on_leaf<node_shape<N>::index, node_shape<N>::layout>;
+};
+template <class N, class Map>
+struct relabel<N, Map, node_kind::argument, type_list<>> {
+    using type = typename Map::template on_arg<node_shape<N>::index, node_shape<N>::layout>;
+};
+template <class N, class Map>
+struct relabel<N, Map, node_kind::constant, type_list<>> {
+    using type = N;
+};
+template <class N, class Map>
+struct relabel<N, Map, node_kind::unknown, type_list<>> : refuse_unknown<walker::relabel, N> {
+    using type = N;
 };
 
 // Every product of a node tree formed again in mode M (looped or unrolled, as the user forces).

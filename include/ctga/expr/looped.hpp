@@ -795,7 +795,7 @@ consteval std::size_t leaf_index() {
 }
 
 template <class N>
-inline constexpr bool is_looped_node = shape_for<walker::looped_nodes, N>::kind == node_kind::looped;
+inline constexpr bool is_looped_node = node_shape<N>::kind == node_kind::looped;
 
 template <class X>
 constexpr auto operand_layout_of() {
@@ -825,19 +825,23 @@ struct traits<looped<Rule, X, Y>, P> {
 };
 
 // The outermost looped nodes of a tree (those inside a looped node are its operands' business).
-template <class N>
+// Every program walks its root's tree for them: by partial specialisation on the node's kind, as
+// relabel (expression.hpp).
+template <class N, node_kind K = node_shape<N>::kind, class Children = typename node_shape<N>::children>
 struct looped_nodes;
 template <class N>
 using looped_nodes_t = typename looped_nodes<N>::type;
-template <class... C>
-auto looped_nodes_of(type_list<C...>) -> decltype((type_list<>{} + ... + looped_nodes_t<C>{}));
+template <class N, node_kind K, class... C>
+struct looped_nodes<N, K, type_list<C...>> {
+    using type = decltype((type_list<>{} + ... + looped_nodes_t<C>{}));
+};
+template <class N, class... C>
+struct looped_nodes<N, node_kind::looped, type_list<C...>> {
+    using type = type_list<N>;
+};
 template <class N>
-struct looped_nodes {
-    static constexpr auto pick() {
-        if constexpr (is_looped_node<N>) return type_list<N>{};
-        else return decltype(looped_nodes_of(typename node_shape<N>::children{})){};
-    }
-    using type = decltype(pick());
+struct looped_nodes<N, node_kind::unknown, type_list<>> : refuse_unknown<walker::looped_nodes, N> {
+    using type = type_list<>;
 };
 
 }  // namespace ctga::expr

@@ -52,6 +52,7 @@ constexpr type_list<A..., B...> operator+(type_list<A...>, type_list<B...>) {
 // its value depends on them. The derivative rules (derivative.hpp) are per kind: a bilinear
 // product obeys Leibniz, a linear map and a scaling pass through, a sum adds.
 enum class node_kind {
+    unknown,   // not a node: a type without a node_shape
     argument,  // arg: a formula's argument (bound to a data leaf before anything runs)
     data_leaf, // leaf: a multivector's or a scalar's storage
     constant,  // constant: exact coefficients, no data
@@ -66,6 +67,8 @@ enum class node_kind {
 template <class N>
 struct node_shape {
     static constexpr bool known = false;
+    static constexpr node_kind kind = node_kind::unknown;
+    using children = type_list<>;
 };
 // arg and leaf: operand I, of layout L
 template <node_kind Kind, std::size_t I, auto L>
@@ -128,17 +131,24 @@ struct node_shape<scaled<Q, X>> {
     using with = scaled<Q, A>;
 };
 
-// Node N as the walker Walker (a tag type named after the walker) sees it. The only door from a
-// walker to a node's parts: a type that is not a node kind is refused here, and the compiler's
-// note names both template arguments (shape_for<the walker, the type>).
+// A walker that meets a type that is not a node kind stops here: Walker is a tag type named after
+// the walker, and the compiler's note names both (refuse_unknown<the walker, the type>).
+template <class Walker, class N, bool Known = node_shape<N>::known>
+struct refuse_unknown {};
 template <class Walker, class N>
-struct shape_for : node_shape<N> {
+struct refuse_unknown<Walker, N, false> {
     static_assert(node_shape<N>::known,
-                  "ctga::expr: a node-tree walker (the first argument of shape_for) met a type that is not a node "
-                  "kind (the second): describe the new kind by a node_shape in expr/nodes.hpp");
+                  "ctga::expr: a node-tree walker (the first argument of refuse_unknown) met a type that is not a "
+                  "node kind (the second): describe the new kind by a node_shape in expr/nodes.hpp");
 };
 
-// The walkers, as tags for shape_for.
+// Node N as the walker Walker sees it: its shape, a type that is not a node kind refused. The
+// walkers that run on every node of every expression (relabel, looped_nodes) dispatch instead by
+// partial specialisation on node_shape<N>::kind, their node_kind::unknown case refused the same way.
+template <class Walker, class N>
+struct shape_for : node_shape<N>, refuse_unknown<Walker, N> {};
+
+// The walkers, as tags for shape_for and refuse_unknown.
 namespace walker {
 struct relabel {};
 struct reform {};
@@ -146,6 +156,7 @@ struct looped_nodes {};
 struct derive {};
 struct read_operand {};
 struct is_constant {};
+struct normal_form {};
 }  // namespace walker
 
 // N with each child C replaced by F::template on<C> (N itself when it has no children).

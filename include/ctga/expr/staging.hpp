@@ -58,8 +58,12 @@ constexpr bool trivial(const std::array<term, N>& t) {
 // all inputs iff their fully expanded normal forms are equal).
 enum class staging { by_cost, never, proof };
 
+// Each node kind's normal form is a specialisation below (looped.hpp has the looped node's). A
+// type that is not a node kind, or a kind without one, is refused by name.
 template <class Node, staging P = staging::by_cost>
-struct traits;
+struct traits : refuse_unknown<walker::normal_form, Node> {
+    static_assert(!node_shape<Node>::known, "ctga::expr::traits: this node kind has no normal form (expr/staging.hpp)");
+};
 
 // A leaf (a formula's argument or a data leaf): its components, each one source factor. Data
 // leaves are numbered after the formula's arguments; traits see the final numbering.

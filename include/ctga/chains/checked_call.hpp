@@ -45,8 +45,7 @@ constexpr bool finite_all(const T& x) noexcept {
         return finite_all(x.u);
     } else if constexpr (std::is_empty_v<T>) {  // a joint without parameters
         return true;
-    }
-    else if constexpr (multivector_type<T>) {
+    } else if constexpr (multivector_type<T>) {
         for (std::size_t i = 0; i < T::size(); ++i)
             if (!is_finite(x[i])) return false;
         return true;

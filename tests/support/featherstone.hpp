@@ -58,6 +58,9 @@
 //   q_dot(m, q, v)               nq numbers: the rate of q for the velocity coordinates v
 // and the spatial helpers skew, crm, crf, plucker, plucker_inverse, force_transform,
 // spatial_inertia, axis_angle, quaternion_rotation, jcalc, tree_transform.
+// Frames (poses, velocities, accelerations, Jacobians and their time derivatives in local /
+// world / local-world-aligned coordinates), centre of mass, centroidal momentum, mimic joints and
+// the lumping of fixed links: support/featherstone_frames.hpp, built on this file.
 #pragma once
 
 #include <cmath>

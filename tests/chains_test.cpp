@@ -173,8 +173,8 @@ using ctga::test::rel_error;
 
 template <class Tree, std::size_t I>
 void check_jacobians(const draw<Tree>& d) {
-    const ch::jacobian_matrix<Tree> Jb = ch::body_jacobian(d.m, d.q, ch::body<I>);
-    const ch::jacobian_matrix<Tree> Jw = ch::world_jacobian(d.m, d.q, ch::body<I>);
+    const ch::jacobian_matrix<Tree> Jb = ch::frame_jacobian(d.m, d.q, ch::body<I>, ch::reference::local);
+    const ch::jacobian_matrix<Tree> Jw = ch::frame_jacobian(d.m, d.q, ch::body<I>, ch::reference::world);
     const Eigen::MatrixXd Jb_ref = fs::jacobian_body(d.ref, d.q_ref, static_cast<int>(I));
     const Eigen::MatrixXd Jw_ref = fs::jacobian_world(d.ref, d.q_ref, static_cast<int>(I));
     INFO("body " << I);

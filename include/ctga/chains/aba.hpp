@@ -17,9 +17,12 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <utility>
 
+#include "ctga/chains/crba.hpp"
 #include "ctga/chains/passes.hpp"
+#include "ctga/chains/rnea.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/mechanics/articulated_inertia.hpp"
 #include "ctga/mechanics/coscrew.hpp"
@@ -28,6 +31,7 @@
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/mechanics/screw.hpp"
 #include "ctga/operations/evaluate.hpp"
+#include "ctga/support/cholesky.hpp"
 #include "ctga/support/uninitialized.hpp"
 
 namespace ctga::chains {
@@ -39,9 +43,31 @@ constexpr std::size_t null_component() {
     if constexpr (requires { J::component; }) return J::component;
     else return 6;
 }
+// A tree with mimic joints (joints.hpp) couples a mimic and its master, often on different
+// branches (two gripper fingers), which ABA's recursion cannot take: its forward dynamics solves
+// H q̈ = τ − C(q, q̇) with H = Gᵀ H_all G (crba) and C = rnea(q, q̇, 0) (with the external
+// wrenches), by Cholesky. A singular H gives NaN (massless_subtree names the cause beforehand).
 template <class Tree, class T>
-constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
-                                    const joint_vector<Tree, T>& tau, const body_wrenches<Tree, T>* f_ext) noexcept {
+constexpr joint_vector<Tree, T> coupled_forward_dynamics(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                         const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
+                                                         const body_wrenches<Tree, T>* f_ext) noexcept {
+    const joint_vector<Tree, T> zero{};
+    const joint_vector<Tree, T> C = f_ext ? chains::rnea(m, q, qd, zero, *f_ext) : chains::rnea(m, q, qd, zero);
+    joint_vector<Tree, T> b;
+    for (std::size_t i = 0; i < Tree::nv; ++i) b[i] = tau[i] - C[i];
+    const auto L = cholesky(chains::crba(m, q));
+    if (!L) {
+        b.fill(std::numeric_limits<T>::quiet_NaN());
+        return b;
+    }
+    return cholesky_solve(*L, b);
+}
+
+// The three passes above (a tree without mimic joints).
+template <class Tree, class T>
+constexpr joint_vector<Tree, T> articulated_body(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                 const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
+                                                 const body_wrenches<Tree, T>* f_ext) noexcept {
     kinematics<Tree, T> k{uninitialized};
     forward_pass<pass::velocities, false>(k, m, q, qd.data(), static_cast<const T*>(nullptr), vec3<T>{});
     // N^A_i = N_i, p^A_i = v_i ×* (N_i v_i) − f_ext,i: each array built element by element
@@ -121,6 +147,13 @@ constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration
         }
     });
     return qdd;
+}
+
+template <class Tree, class T>
+constexpr joint_vector<Tree, T> aba(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
+                                    const joint_vector<Tree, T>& tau, const body_wrenches<Tree, T>* f_ext) noexcept {
+    if constexpr (Tree::has_mimic) return coupled_forward_dynamics(m, q, qd, tau, f_ext);
+    else return articulated_body(m, q, qd, tau, f_ext);
 }
 }  // namespace algorithm_detail
 

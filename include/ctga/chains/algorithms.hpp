@@ -6,17 +6,25 @@
 //   crba.hpp                crba: the joint-space mass matrix H(q), composite rigid bodies        (§6.2)
 //   aba.hpp                 aba: forward dynamics q̈(q, q̇, τ), articulated bodies                (§7.3)
 //   energy.hpp              tree_kinetic_energy, tree_potential_energy
-//   frame_jacobian.hpp      body_jacobian, world_jacobian: the geometric Jacobian of a body's frame
+//   frames.hpp              frame_pose, frame_velocity, frame_acceleration, frame_classical_acceleration
+//   frame_jacobian.hpp      frame_jacobian, frame_jacobian_time_variation: J and J̇ of a frame
+//   center_of_mass.hpp      center_of_mass, subtree_centers_of_mass, center_of_mass_jacobian
+//   centroidal.hpp          centroidal_momentum, centroidal_momentum_matrix   (Orin & Goswami 2008)
+//   floating_base.hpp       a floating base's pose and velocity to and from ROS's / Pinocchio's numbers
 //   checked_call.hpp        checked_call: any of them on checked inputs, with its result checked
 //
 // What they share (configuration, joint vectors, kinematics, the forward pass) is passes.hpp.
 #pragma once
 
 #include "ctga/chains/aba.hpp"
+#include "ctga/chains/center_of_mass.hpp"
+#include "ctga/chains/centroidal.hpp"
 #include "ctga/chains/checked_call.hpp"
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/energy.hpp"
 #include "ctga/chains/forward_kinematics.hpp"
+#include "ctga/chains/floating_base.hpp"
 #include "ctga/chains/frame_jacobian.hpp"
+#include "ctga/chains/frames.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/rnea.hpp"

@@ -4,6 +4,7 @@
 // N^c_i = N_i + Σ_children X_c N^c_c (the composite of body i and everything it carries, moved
 // into i's frame: transform(X, body_inertia), 54m 50a). Column (i, k) of H: F = N^c_i S_ik, then
 // H(j, l) = F(S_jl) for body i's own dofs and, moving F out through X_i, X_λ(i), …, each ancestor j.
+// With mimic joints (joints.hpp) the same entries are summed into H = Gᵀ H_all G.
 #pragma once
 
 #include <array>
@@ -25,35 +26,58 @@ template <class Tree, class T = double>
 using joint_matrix = std::array<std::array<T, Tree::nv>, Tree::nv>;  // H, row-major
 
 namespace algorithm_detail {
-// H(j, ·) = F(S_j) for body j's dofs.
+// The weight of body J's joint in G (joints.hpp): a mimic's multiplier, 1 for any other joint.
 template <std::size_t J, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr T dof_weight(const model<Tree, T>& m) noexcept {
+    if constexpr (is_mimic<typename Tree::template joint_at<J>>) return m.template link<J>().joint.multiplier;
+    else return T(1);
+}
+// H(j, c) = F(S_j) for body j's dofs, F from column c. In a tree with mimic joints the entries of
+// H_all are added into H = Gᵀ H_all G with their weights: an ancestor's entry both ways round (H_all
+// is symmetric and only its lower part is computed), the column's own body's (Own) once, since
+// its columns give its whole block.
+template <std::size_t J, bool Own, class Tree, class T>
 CTGA_ALWAYS_INLINE constexpr void fill_rows(const model<Tree, T>& m, joint_matrix<Tree, T>& H, std::size_t col,
-                                            const coscrew<T>& F) noexcept {
+                                            const T& w_col, const coscrew<T>& F) noexcept {
     using Jt = typename Tree::template joint_at<J>;
+    constexpr std::size_t n = is_mimic<Jt> ? 1 : Jt::nv;
     [&]<std::size_t... L>(std::index_sequence<L...>) {
-        ((H[Tree::v_offset[J] + L][col] = H[col][Tree::v_offset[J] + L] =
-              pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
-         ...);
-    }(std::make_index_sequence<Jt::nv>{});
+        if constexpr (!Tree::has_mimic) {
+            ((H[Tree::v_offset[J] + L][col] = H[col][Tree::v_offset[J] + L] =
+                  pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
+             ...);
+        } else {
+            const T w = w_col * dof_weight<J>(m);
+            const auto add = [&](std::size_t row, const T& x) {
+                H[row][col] += x;
+                if constexpr (!Own) H[col][row] += x;
+            };
+            (add(Tree::v_offset[Tree::reads_from[J]] + L, w * pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
+             ...);
+        }
+    }(std::make_index_sequence<n>{});
 }
 // F moved out of body `Child` into its parent's frame, and the parent's entries filled; then on up.
 template <std::size_t Child, class Tree, class T>
 CTGA_ALWAYS_INLINE constexpr void fill_ancestors(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
-                                                 joint_matrix<Tree, T>& H, std::size_t col, const coscrew<T>& F) noexcept {
+                                                 joint_matrix<Tree, T>& H, std::size_t col, const T& w_col,
+                                                 const coscrew<T>& F) noexcept {
     constexpr int p = Tree::parent[Child];
     if constexpr (p >= 0) {
         const coscrew<T> Fp = transform(X[Child], F);
-        if constexpr (Tree::template joint_at<static_cast<std::size_t>(p)>::nv > 0) fill_rows<static_cast<std::size_t>(p)>(m, H, col, Fp);
-        fill_ancestors<static_cast<std::size_t>(p)>(m, X, H, col, Fp);
+        if constexpr (moves<typename Tree::template joint_at<static_cast<std::size_t>(p)>>)
+            fill_rows<static_cast<std::size_t>(p), false>(m, H, col, w_col, Fp);
+        fill_ancestors<static_cast<std::size_t>(p)>(m, X, H, col, w_col, Fp);
     }
 }
 // Column K of body I's dofs, from F = N^c_I S_IK.
 template <std::size_t I, std::size_t K, class Tree, class T>
 CTGA_ALWAYS_INLINE constexpr void crba_column(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
                                               joint_matrix<Tree, T>& H, const coscrew<T>& F) noexcept {
-    const std::size_t col = Tree::v_offset[I] + K;
-    fill_rows<I>(m, H, col, F);
-    fill_ancestors<I>(m, X, H, col, F);
+    const std::size_t col = Tree::v_offset[Tree::reads_from[I]] + K;
+    const T w = dof_weight<I>(m);
+    fill_rows<I, true>(m, H, col, w, F);
+    fill_ancestors<I>(m, X, H, col, w, F);
 }
 }  // namespace algorithm_detail
 
@@ -75,10 +99,10 @@ struct crba_t {
         forward<Tree::size>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;
             using J = typename Tree::template joint_at<i>;
-            if constexpr (J::nv > 0)
+            if constexpr (moves<J>)
                 [&]<std::size_t... K>(std::index_sequence<K...>) {
                     (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
-                }(std::make_index_sequence<J::nv>{});
+                }(std::make_index_sequence<is_mimic<J> ? 1 : J::nv>{});
         });
         return H;
     }

@@ -11,10 +11,13 @@
 //
 //   revolute<axis::z>       rotation by q about the joint frame's z axis    nq = nv = 1
 //   prismatic<axis::x>      translation by q along x                        nq = nv = 1
+//   revolute<axis::minus_y> rotation by q about −y: S = −e3e1, still one blade
+//   prismatic<axis::minus_z> translation by q along −z: S = −e3e
 //   revolute_about          rotation about a unit axis u given at run time  nq = nv = 1
 //   prismatic_along         translation along a unit axis u (run time)      nq = nv = 1
 //   fixed                   no motion                                       nq = nv = 0
 //   floating                a motor g (§3) relative to the joint frame      nq = 8, nv = 6
+//   mimic<J, M>             J (one dof) at q = r q_M + o, body M's joint    nq = nv = 0
 //
 // The body frame is the joint frame moved by the joint: its map in the parent's frame is
 // placement ∘ motion(q), a motor_map (R, t) (motor.hpp). The floating joint's velocity numbers
@@ -38,18 +41,21 @@
 
 namespace ctga::chains {
 
-enum class axis { x, y, z };
+// A coordinate axis of the joint frame, either way round.
+enum class axis { x, y, z, minus_x, minus_y, minus_z };
 
 namespace joint_detail {
 
 // The bivector of Cl(0,3,1) of a rotation about coordinate axis A and of a translation along
 // it (screw.hpp: s = ωx e2e3 + ωy e3e1 + ωz e1e2 + vx e1e + vy e2e + vz e3e).
-template <axis A>
-inline constexpr fixed_string rotation_blade = A == axis::x ? fixed_string{"e2e3"} : A == axis::y ? fixed_string{"e3e1"} : fixed_string{"e1e2"};
-template <axis A>
-inline constexpr fixed_string translation_blade = A == axis::x ? fixed_string{"e1e"} : A == axis::y ? fixed_string{"e2e"} : fixed_string{"e3e"};
+constexpr int index_of(axis a) { return static_cast<int>(a) % 3; }
+constexpr int sign_of(axis a) { return static_cast<int>(a) < 3 ? 1 : -1; }
 
-constexpr int index_of(axis a) { return a == axis::x ? 0 : a == axis::y ? 1 : 2; }
+// (The blade of −x is e2e3 too: the sign goes into the joint's S = −1·e2e3.)
+template <axis A>
+inline constexpr fixed_string rotation_blade = index_of(A) == 0 ? fixed_string{"e2e3"} : index_of(A) == 1 ? fixed_string{"e3e1"} : fixed_string{"e1e2"};
+template <axis A>
+inline constexpr fixed_string translation_blade = index_of(A) == 0 ? fixed_string{"e1e"} : index_of(A) == 1 ? fixed_string{"e2e"} : fixed_string{"e3e"};
 
 // placement ∘ (rotation by angle q about coordinate axis k): R' = R Rₖ(q), t' = t. With
 // (a, b) = (k + 1, k + 2) mod 3, Rₖ(q) turns column a of R towards column b:
@@ -92,15 +98,11 @@ struct unit_axis {
 
 }  // namespace joint_detail
 
-// Whether a joint's type leaves its axis to run time (revolute_about, prismatic_along): make_link
-// then takes the axis, and refuses one for every other joint, whose axis its type fixes.
-template <class J>
-inline constexpr bool has_run_time_axis = std::is_same_v<typename J::template parameters<double>, joint_detail::unit_axis<double>>;
-
 namespace joint_detail {
 
-// One degree of freedom along a single blade known at compile time (an axis joint): S = 1·Blade.
-template <fixed_string Blade>
+// One degree of freedom along a single blade known at compile time (an axis joint):
+// S = Sign·Blade, Sign = ±1.
+template <fixed_string Blade, int Sign>
 struct one_blade {
     static constexpr std::size_t nq = 1, nv = 1;
     // the screw component S lies on (screw.hpp's order: ω then v), e.g. 2 for e1e2
@@ -116,7 +118,7 @@ struct one_blade {
     using subspace_type = cl031::mv<T, Blade>;
     template <std::size_t K, class T>
     static constexpr subspace_type<T> subspace(const parameters<T>&) noexcept {
-        return subspace_type<T>{T(1)};
+        return subspace_type<T>{T(Sign)};
     }
 };
 
@@ -136,28 +138,34 @@ struct unit_axis_dof {
 
 }  // namespace joint_detail
 
-// Rotation about a coordinate axis of the joint frame.
+// Rotation about a coordinate axis of the joint frame (about −e_k: by −q about e_k).
 template <axis A>
-struct revolute : joint_detail::one_blade<joint_detail::rotation_blade<A>> {
+struct revolute : joint_detail::one_blade<joint_detail::rotation_blade<A>, joint_detail::sign_of(A)> {
     template <class T>
     using parameters = joint_detail::no_parameters;  // (the base is dependent: named again here)
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
         const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
-        return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, cs.cos, cs.sin);
+        if constexpr (joint_detail::sign_of(A) > 0)
+            return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, cs.cos, cs.sin);
+        else
+            return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, cs.cos, -cs.sin);
     }
 };
 
-// Translation along a coordinate axis of the joint frame: t' = t + q R e_k (3m 3a).
+// Translation along a coordinate axis of the joint frame: t' = t ± q R e_k (3m 3a).
 template <axis A>
-struct prismatic : joint_detail::one_blade<joint_detail::translation_blade<A>> {
+struct prismatic : joint_detail::one_blade<joint_detail::translation_blade<A>, joint_detail::sign_of(A)> {
     template <class T>
     using parameters = joint_detail::no_parameters;
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
         constexpr int k = joint_detail::index_of(A);
         motor_map<T> G = placement;
-        for (int r = 0; r < 3; ++r) G.t[r] = placement.t[r] + q[0] * placement.R[r][k];
+        if constexpr (joint_detail::sign_of(A) > 0)
+            for (int r = 0; r < 3; ++r) G.t[r] = placement.t[r] + q[0] * placement.R[r][k];
+        else
+            for (int r = 0; r < 3; ++r) G.t[r] = placement.t[r] - q[0] * placement.R[r][k];
         return G;
     }
 };
@@ -218,6 +226,72 @@ struct floating {
         return {joint_detail::multiply(placement.R, J.R), linear3::add(linear3::apply(placement.R, J.t), placement.t)};
     }
 };
+
+// The coupling of a mimic joint to the joint it follows: q = multiplier · q_master + offset.
+template <class T = double>
+struct coupling {
+    T multiplier{1};
+    T offset{0};
+};
+
+// A joint J of one degree of freedom that follows body Master's joint (URDF's <mimic>: gripper
+// fingers, hands): q = r q_M + o, q̇ = r q̇_M, q̈ = r q̈_M. It has no coordinates of its own
+// (nq = nv = 0) and reads its master's; its velocity is S (r q̇_M). With G the matrix taking the
+// independent velocities to every joint's (1 in the independent joints' own places, r in the
+// mimic's row, master's column), the algorithms give the reduced τ = Gᵀ τ_all (the mimic's torque
+// goes to its master), H = Gᵀ H_all G and J = J_all G.
+template <class J, std::size_t Master>
+struct mimic {
+    static_assert(J::nq == 1 && J::nv == 1,
+                  "ctga::chains::mimic: the mimicking joint has one degree of freedom (revolute, prismatic)");
+    static constexpr std::size_t nq = 0, nv = 0;
+    static constexpr std::size_t master = Master;
+    using followed_joint = J;
+    template <class T>
+    struct parameters {
+        typename J::template parameters<T> joint{};  // J's own parameters (e.g. the axis of revolute_about)
+        T multiplier{1};
+        T offset{0};
+    };
+    template <class T>
+    using subspace_type = typename J::template subspace_type<T>;
+    template <std::size_t K, class T>
+    static constexpr subspace_type<T> subspace(const parameters<T>& p) noexcept {
+        return J::template subspace<K, T>(p.joint);
+    }
+    // q_master: the master's coordinate.
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>& p, const T* q_master) noexcept {
+        const T q = p.multiplier * q_master[0] + p.offset;
+        return J::motion(placement, p.joint, &q);
+    }
+};
+
+template <class J>
+inline constexpr bool is_mimic = false;
+template <class J, std::size_t M>
+inline constexpr bool is_mimic<mimic<J, M>> = true;
+
+// Whether a joint moves its body relative to the parent: it has velocity numbers, or it mimics.
+template <class J>
+inline constexpr bool moves = J::nv > 0 || is_mimic<J>;
+
+// Whether a joint's type leaves its axis to run time (revolute_about, prismatic_along, or a mimic
+// of one): make_link then takes the axis, and refuses one for every other joint, whose axis its
+// type fixes.
+namespace joint_detail {
+template <class J>
+struct axis_owner {
+    using type = J;
+};
+template <class J, std::size_t M>
+struct axis_owner<mimic<J, M>> {
+    using type = J;
+};
+}  // namespace joint_detail
+template <class J>
+inline constexpr bool has_run_time_axis =
+    std::is_same_v<typename joint_detail::axis_owner<J>::type::template parameters<double>, joint_detail::unit_axis<double>>;
 
 using revolute_x = revolute<axis::x>;
 using revolute_y = revolute<axis::y>;

@@ -84,7 +84,7 @@ struct tree_motion {
     using scalar_type = T;
     using motor_type = coordinates<Tree::nq, T>;  // q
     using screw_type = coordinates<Tree::nv, T>;  // q̇ (a floating base's: its body-frame screw)
-    static constexpr frame velocity_frame = frame::body;
+    static constexpr ctga::frame velocity_frame = ctga::frame::body;
 
     model<Tree, T> m;
     Actuation actuation{};  // τ(q, q̇), joint forces

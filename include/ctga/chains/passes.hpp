@@ -68,10 +68,13 @@ CTGA_ALWAYS_INLINE constexpr void backward(F&& f) {
         std::make_index_sequence<N>{});
 }
 
-// S q̇ of a joint: Σ_k S_k q̇_k, in the joint's own screw type (one blade for an axis joint).
+// S q̇ of a joint: Σ_k S_k q̇_k, in the joint's own screw type (one blade for an axis joint); x
+// points at the numbers the joint reads (a mimic joint: its master's, q̇ = r q̇_master).
 template <class J, class P, class T>
 CTGA_ALWAYS_INLINE constexpr auto joint_screw(const P& params, const T* x) noexcept {
-    if constexpr (J::nv == 1) return typename J::template subspace_type<T>{J::template subspace<0, T>(params) * x[0]};
+    if constexpr (is_mimic<J>)
+        return typename J::template subspace_type<T>{J::template subspace<0, T>(params) * (params.multiplier * x[0])};
+    else if constexpr (J::nv == 1) return typename J::template subspace_type<T>{J::template subspace<0, T>(params) * x[0]};
     else if constexpr (J::nv == 6) return screw<T>{x[0], x[1], x[2], x[3], x[4], x[5]};
     else static_assert(J::nv == 1 || J::nv == 6, "ctga::chains: a joint has 1 or 6 degrees of freedom (or 0: fixed)");
 }
@@ -81,7 +84,7 @@ template <std::size_t I, class Tree, class T>
 CTGA_ALWAYS_INLINE constexpr motor_map<T> joint_map(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
     using J = typename Tree::template joint_at<I>;
     const auto& L = m.template link<I>();
-    return J::motion(L.placement, L.joint, q.data() + Tree::q_offset[I]);
+    return J::motion(L.placement, L.joint, q.data() + Tree::q_offset[Tree::reads_from[I]]);
 }
 
 // The world's acceleration in Featherstone's gravity trick (§5.3) is a pure translation, −g (or 0
@@ -121,12 +124,11 @@ constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, con
         } else if constexpr (p < 0) {
             k.pose[i] = X;
         } else {
-            const motor_map<T>& W = k.pose[p];
-            k.pose[i] = {joint_detail::multiply(W.R, X.R), linear3::add(linear3::apply(W.R, X.t), W.t)};
+            k.pose[i] = compose(k.pose[p], X);
         }
         if constexpr (What != pass::poses) {
-            constexpr std::size_t o = Tree::v_offset[i];
-            if constexpr (J::nv == 0) {
+            constexpr std::size_t o = Tree::v_offset[Tree::reads_from[i]];
+            if constexpr (!moves<J>) {
                 if constexpr (p < 0) {
                     k.v[i] = screw<T>{};
                     if constexpr (What == pass::accelerations) k.a[i] = world_acceleration(X, a_world);

@@ -5,6 +5,7 @@
 //
 //   f_i = N_i a_i + v_i ×* (N_i v_i) − f_ext,i         (N s = A ∨ (N ∧ s), the momentum of §5)
 //   τ_i = f_i(S_i) = f_i ∨ (Q0 ∧ S_i),  f_λ += X_i f_i  (the pairing of §5; ḡ f ḡ* moves f out)
+// and a mimic joint's r f_i(S_i) is added to its master's τ.
 #pragma once
 
 #include <cstddef>
@@ -45,6 +46,17 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
             }(std::make_index_sequence<J::nv>{});
         if constexpr (p >= 0) f[p] = f[p] + transform(k.X[i], f[i]);
     });
+    // a mimic joint's torque r f_i(S_i) goes to its master (τ = Gᵀ τ_all, joints.hpp); f_i is final
+    // once body i has passed it on
+    if constexpr (Tree::has_mimic)
+        forward<Tree::size>([&](auto body) {
+            constexpr std::size_t i = decltype(body)::value;
+            using J = typename Tree::template joint_at<i>;
+            if constexpr (is_mimic<J>) {
+                const auto& L = m.template link<i>();
+                tau[Tree::v_offset[J::master]] += L.joint.multiplier * pairing(f[i], J::template subspace<0, T>(L.joint));
+            }
+        });
     return tau;
 }
 }  // namespace algorithm_detail

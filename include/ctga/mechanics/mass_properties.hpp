@@ -6,6 +6,11 @@
 // m > 0, I_c symmetric positive definite, and principal moments obeying the triangle inequalities
 // I_i ≤ I_j + I_k (equivalently, the second moment ½ tr(I)·1 − I is positive semi-definite: some
 // mass distribution has these moments). Equality is allowed (a lamina).
+//
+// Robot descriptions as they come carry physically questionable data (a camera's tensor that
+// violates the triangle inequality, principal moments of ±4e-22 by rounding) and massless links.
+// mass_check::as_given accepts them as given, as Pinocchio and MuJoCo do: finite numbers, m ≥ 0
+// and a symmetric tensor are still required (the URDF tool warns about the rest, urdf_to_ctga.py).
 #pragma once
 
 #include <limits>
@@ -38,15 +43,23 @@ constexpr T tolerance(const mat3<T>& I) noexcept {
 }
 
 template <class T>
-constexpr error_code check(const T& m, const vec3<T>& c, const mat3<T>& I) noexcept {
+constexpr error_code check_as_given(const T& m, const vec3<T>& c, const mat3<T>& I) noexcept {
     for (const auto& row : I)
         if (!all_finite(row[0], row[1], row[2])) return error_code::non_finite;
     if (!all_finite(m, c[0], c[1], c[2])) return error_code::non_finite;
-    if (!(m > T(0))) return error_code::non_positive_mass;
+    if (m < T(0)) return error_code::non_positive_mass;
     const T tol = tolerance(I);
     for (int i = 0; i < 3; ++i)
         for (int j = i + 1; j < 3; ++j)
             if (abs(I[i][j] - I[j][i]) > tol) return error_code::not_symmetric;
+    return error_code::none;
+}
+
+template <class T>
+constexpr error_code check(const T& m, const vec3<T>& c, const mat3<T>& I) noexcept {
+    if (const error_code e = check_as_given(m, c, I); e != error_code::none) return e;
+    if (!(m > T(0))) return error_code::non_positive_mass;
+    const T tol = tolerance(I);
     // positive definite: the leading principal minors are positive (Sylvester)
     const T m1 = I[0][0], m2 = I[0][0] * I[1][1] - I[0][1] * I[0][1];
     const T m3 = I[0][0] * (I[1][1] * I[2][2] - I[1][2] * I[1][2]) - I[0][1] * (I[0][1] * I[2][2] - I[1][2] * I[0][2]) +
@@ -71,11 +84,19 @@ constexpr error_code check(const T& m, const vec3<T>& c, const mat3<T>& I) noexc
 
 }  // namespace inertia_detail
 
+// What make_mass_properties checks: a physical rigid body (the default), or the numbers as given.
+enum class mass_check {
+    physical,  // finite, m > 0, I_c symmetric positive definite, the triangle inequalities
+    as_given,  // finite, m ≥ 0 (0: a massless frame), I_c symmetric
+};
+
 // Mass properties from the mass, the centre of mass and the inertia tensor about it, checked.
 template <class T>
 [[nodiscard]] constexpr checked<mass_properties<T>> make_mass_properties(const T& mass, const vec3<T>& com,
-                                                                         const mat3<T>& inertia_c) noexcept {
-    const error_code e = inertia_detail::check(mass, com, inertia_c);
+                                                                         const mat3<T>& inertia_c,
+                                                                         mass_check what = mass_check::physical) noexcept {
+    const error_code e = what == mass_check::physical ? inertia_detail::check(mass, com, inertia_c)
+                                                      : inertia_detail::check_as_given(mass, com, inertia_c);
     if (e != error_code::none) return {{}, e};
     mass_properties<T> out{mass, com, inertia_c};
     // symmetrise what the check accepted as symmetric to rounding

@@ -198,6 +198,17 @@ template <class T>
     return out;
 }
 
+// The map of g_A g_B (B's frame placed in A's, A placed in the world): R = R_A R_B,
+// t = R_A t_B + t_A, 36m 30a.
+template <class T>
+[[nodiscard]] constexpr motor_map<T> compose(const motor_map<T>& A, const motor_map<T>& B) noexcept {
+    motor_map<T> out;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out.R[i][j] = A.R[i][0] * B.R[0][j] + A.R[i][1] * B.R[1][j] + A.R[i][2] * B.R[2][j];
+    out.t = linear3::add(linear3::apply(A.R, B.t), A.t);
+    return out;
+}
+
 // The map of g⁻¹ = g* from the map of g: Rᵀ and −Rᵀ t (x ↦ R x + t inverted), 9m 6a.
 template <class T>
 [[nodiscard]] constexpr motor_map<T> inverse(const motor_map<T>& G) noexcept {

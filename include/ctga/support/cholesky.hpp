@@ -1,0 +1,50 @@
+// A dense symmetric positive definite system A x = b solved by Cholesky's factorisation A = L Lᵀ
+// (Golub & Van Loan, Matrix Computations, §4.2): n³/6 multiply-adds, no pivoting (a positive
+// definite matrix needs none). For the mass matrix of a tree with mimic joints (chains/aba.hpp)
+// and the task-space quantities built from it. A matrix that is not positive definite, or a
+// non-finite entry, is reported (not_positive_definite, non_finite), never answered with a number.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+
+#include "ctga/support/checked.hpp"
+#include "ctga/support/math.hpp"
+
+namespace ctga {
+
+// L with A = L Lᵀ (lower triangle; the rest zero), A row-major and symmetric (its lower triangle is read).
+template <std::size_t N, class T>
+[[nodiscard]] constexpr checked<std::array<std::array<T, N>, N>> cholesky(const std::array<std::array<T, N>, N>& A) noexcept {
+    std::array<std::array<T, N>, N> L{};
+    for (std::size_t j = 0; j < N; ++j) {
+        T d = A[j][j];
+        for (std::size_t k = 0; k < j; ++k) d -= L[j][k] * L[j][k];
+        if (!all_finite(d)) return {{}, error_code::non_finite};
+        if (!(d > T(0))) return {{}, error_code::not_positive_definite};
+        L[j][j] = math::sqrt(d);
+        for (std::size_t i = j + 1; i < N; ++i) {
+            T s = A[i][j];
+            for (std::size_t k = 0; k < j; ++k) s -= L[i][k] * L[j][k];
+            L[i][j] = s / L[j][j];
+        }
+    }
+    return {L, error_code::none};
+}
+
+// x with L Lᵀ x = b (forward, then back substitution).
+template <std::size_t N, class T>
+[[nodiscard]] constexpr std::array<T, N> cholesky_solve(const std::array<std::array<T, N>, N>& L, std::array<T, N> b) noexcept {
+    for (std::size_t i = 0; i < N; ++i) {
+        for (std::size_t k = 0; k < i; ++k) b[i] -= L[i][k] * b[k];
+        b[i] /= L[i][i];
+    }
+    for (std::size_t i = N; i-- > 0;) {
+        for (std::size_t k = i + 1; k < N; ++k) b[i] -= L[k][i] * b[k];
+        b[i] /= L[i][i];
+    }
+    return b;
+}
+
+}  // namespace ctga

@@ -1,8 +1,11 @@
 #!/usr/bin/env python3
-"""tools/urdf_to_ctga.py on small URDFs written to temporary files: every error case exits with
-status 1 and a message naming the offending element (and writes no header); good URDFs give the
-expected joint types, body order, names, numbers (rotations, inertia tensors) and options.
-Registered in tests/CMakeLists.txt as the CTest test urdf_to_ctga_script. Standard library only."""
+"""tools/urdf_to_ctga.py on small URDFs written to temporary files and on the fixtures in
+tests/data/: every error case exits with status 1 and a message naming the offending element (and
+writes no header); questionable inertia warns (exit 0) unless --strict; good URDFs give the
+expected joint types, body and frame order, names, numbers (rotations, merged inertias, frame
+placements, parsed back from the header and checked against computations written here) and
+options. Registered in tests/CMakeLists.txt as the CTest test urdf_to_ctga_script. Standard
+library only."""
 
 import math
 import os
@@ -12,12 +15,19 @@ import sys
 import tempfile
 import unittest
 
-SCRIPT = os.path.join(os.path.dirname(os.path.abspath(__file__)), os.pardir, "tools", "urdf_to_ctga.py")
+HERE = os.path.dirname(os.path.abspath(__file__))
+SCRIPT = os.path.join(HERE, os.pardir, "tools", "urdf_to_ctga.py")
+DATA = os.path.join(HERE, "data")
+AS_GIVEN = "ctga::mass_check::as_given"
 
 
 def inertial(mass="1.0", xyz="0 0 0", rpy="0 0 0", tensor='ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"'):
     return (f'<inertial><origin xyz="{xyz}" rpy="{rpy}"/><mass value="{mass}"/>'
             f'<inertia {tensor}/></inertial>')
+
+
+def tensor_attrs(ixx, iyy, izz, ixy=0.0, ixz=0.0, iyz=0.0):
+    return f'ixx="{ixx!r}" ixy="{ixy!r}" ixz="{ixz!r}" iyy="{iyy!r}" iyz="{iyz!r}" izz="{izz!r}"'
 
 
 def link(name, body=None):
@@ -41,6 +51,125 @@ def chain(joint_a=None, joint_b=None, link_a=None, link_b=None, base=None):
                  link_a or link("a"),
                  joint_b or joint("jb", "revolute", "a", "b", xyz="0 0 0.3", axis="0 1 0"),
                  link_b or link("b"))
+
+
+def fixture(name):
+    with open(os.path.join(DATA, name), encoding="utf-8") as f:
+        return f.read()
+
+
+# ---- reading the header back ----------------------------------------------------------------------
+
+def numbers(s):
+    return [float(x) for x in re.findall(r"T\(([^()]*)\)", s)]
+
+
+def tree_lines(header):
+    """[(parent, joint type without the ctga::chains:: prefix)] of the tree's link entries."""
+    body = header[header.index("using tree = ctga::chains::tree<"):header.index(">;  // frame")]
+    return [(p, t.replace("ctga::chains::", "", 1))
+            for p, t in re.findall(r"^    ctga::chains::link<(-?\d+), (.+?)>,  // body", body, re.M)]
+
+
+def frame_lines(header):
+    """[(name, body)] of the tree's fixed_frame entries."""
+    return [(n, int(b)) for n, b in re.findall(r'^    ctga::chains::fixed_frame<"((?:[^"\\]|\\.)*)", (-?\d+)>', header,
+                                                re.M)]
+
+
+def names(header, which):
+    block = header[header.index(f"{which}{{\n"):]
+    block = block[:block.index("};")]
+    return re.findall(r'^    "((?:[^"\\]|\\.)*)",$', block, re.M)
+
+
+def body_block(header, index):
+    start = header.index(f"{{  // body {index}:")
+    return header[start:header.index("m.template link<", start)]
+
+
+def frame_block(header, index):
+    start = header.index(f"{{  // frame {index}:")
+    return header[start:header.index(f"m.frames[{index}] = *f;", start)]
+
+
+def motor(block):
+    """(translation, theta, unit axis) of the first rigid_motion in block."""
+    call = block[block.index("ctga::make_translator("):]
+    rotor = call[call.index("ctga::make_rotor("):]
+    t = numbers(call[:call.index("ctga::make_rotor(")])
+    theta, ux, uy, uz = numbers(rotor[:rotor.index("))") + 2])
+    return t, theta, [ux, uy, uz]
+
+
+def mass_properties(block):
+    """(mass, com, tensor, as_given) of a body block."""
+    call = block[block.index("ctga::make_mass_properties("):]
+    call = call[:call.index("}}}") + 3]
+    mp = numbers(call)
+    rest = block[block.index("ctga::make_mass_properties("):]
+    return mp[0], mp[1:4], [mp[4:7], mp[7:10], mp[10:13]], rest.split("}}}")[1].startswith(", " + AS_GIVEN)
+
+
+def extra_args(block):
+    """The make_link arguments after the mass properties (coupling, axis), as text."""
+    rest = block[block.index("ctga::make_mass_properties("):]
+    rest = rest[rest.index("}}}") + 3:rest.index("if (!x)")]
+    return rest[len(", " + AS_GIVEN):] if rest.startswith(", " + AS_GIVEN) else rest
+
+
+def dofs(types):
+    n = 0
+    for _, t in types:
+        if t.startswith("mimic<") or t == "fixed":
+            continue
+        n += 6 if t == "floating" else 1
+    return n
+
+
+# ---- independent maths ----------------------------------------------------------------------------
+
+def rpy_matrix_here(roll, pitch, yaw):
+    """URDF: R = Rz(yaw) Ry(pitch) Rx(roll), written out (not the script's code)."""
+    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw),
+                              math.sin(yaw))
+    return [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
+            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
+            [-sp, cp * sr, cp * cr]]
+
+
+def rodrigues(ux, uy, uz, theta):
+    """Rot(u, theta), right hand: 1 + sin(theta) [u]x + (1 - cos(theta)) [u]x^2."""
+    s, c = math.sin(theta), math.cos(theta)
+    k = [[0, -uz, uy], [uz, 0, -ux], [-uy, ux, 0]]
+    k2 = [[sum(k[i][m] * k[m][j] for m in range(3)) for j in range(3)] for i in range(3)]
+    return [[(1.0 if i == j else 0.0) + s * k[i][j] + (1 - c) * k2[i][j] for j in range(3)] for i in range(3)]
+
+
+def mm(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
+
+
+def mv(a, v):
+    return [sum(a[i][k] * v[k] for k in range(3)) for i in range(3)]
+
+
+def tr(a):
+    return [[a[j][i] for j in range(3)] for i in range(3)]
+
+
+def eye():
+    return [[1.0 if i == j else 0.0 for j in range(3)] for i in range(3)]
+
+
+def about_origin(m, c, I):
+    """The inertia about the frame's origin, I_c + m (|c|^2 1 - c c^T): additive over parts."""
+    c2 = sum(x * x for x in c)
+    return [[I[i][j] + m * ((c2 if i == j else 0.0) - c[i] * c[j]) for j in range(3)] for i in range(3)]
+
+
+def cross3(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
 
 
 class Converter(unittest.TestCase):
@@ -78,12 +207,35 @@ class Converter(unittest.TestCase):
         self.assertEqual(err, "")
         return header
 
+    def convert_warned(self, text, *args):
+        """A conversion that succeeds with warnings: (header, [warning lines])."""
+        rc, header, err = self.run_script(text, *args)
+        self.assertEqual(rc, 0, err)
+        self.assertIsNotNone(header)
+        lines = err.splitlines()
+        self.assertTrue(lines, "expected a warning")
+        for line in lines:
+            self.assertTrue(line.startswith("urdf_to_ctga: warning: "), line)
+        return header, lines
+
+    def assert_close(self, got, expected, tol=1e-14, msg=None):
+        if isinstance(expected, (int, float)):
+            self.assertLessEqual(abs(got - expected), tol * max(1.0, abs(expected)), msg)
+            return
+        self.assertEqual(len(got), len(expected), msg)
+        for g, e in zip(got, expected):
+            self.assert_close(g, e, tol, msg)
+
+    def assert_rotation(self, theta, u, expected, tol=1e-14):
+        self.assert_close(sum(x * x for x in u), 1.0, 1e-15)
+        self.assert_close(rodrigues(*u, theta), expected, tol)
+
     # ---- errors ------------------------------------------------------------------------------
 
     def test_unsupported_joint_types(self):
-        err = self.assert_error(chain(joint_b=joint("knee", "planar", "a", "b")), 'joint "knee"', '"planar"')
-        self.assertIn("is not supported (revolute, continuous, prismatic, fixed, floating)", err)
-        self.assert_error(chain(joint_b=joint("knee", "spherical", "a", "b")), 'joint "knee"', '"spherical"')
+        err = self.assert_error(chain(joint_b=joint("knee", "spherical", "a", "b")), 'joint "knee"', '"spherical"')
+        self.assertIn("is not supported (revolute, continuous, prismatic, fixed, floating, planar)", err)
+        self.assert_error(chain(joint_b=joint("knee", "ball", "a", "b")), 'joint "knee"', '"ball"')
         self.assert_error(chain(joint_b='<joint name="knee"><parent link="a"/><child link="b"/></joint>'),
                           'joint "knee"', "no type")
 
@@ -115,31 +267,54 @@ class Converter(unittest.TestCase):
     def test_no_links(self):
         self.assert_error(robot(), "no <link>")
         self.assert_error(robot(link("only")), 'the root link "only"', "no bodies", "--floating-base")
+        # fixed joints only: everything merges into the world
+        self.assert_error(robot(link("base", ""), joint("j", "fixed", "base", "a"), link("a")), "no bodies")
 
-    def test_inertials(self):
-        self.assert_error(chain(link_b=link("b", "")), 'link "b"', "no <inertial>")
-        self.assert_error(chain(link_b=link("b", inertial(mass="0"))), 'link "b"', "mass 0.0 is not positive")
-        self.assert_error(chain(link_a=link("a", inertial(mass="-2.5"))), 'link "a"', "not positive")
+    def test_inertial_errors(self):
+        self.assert_error(chain(link_a=link("a", inertial(mass="-2.5"))), 'link "a"', "mass -2.5 is negative")
         self.assert_error(chain(link_a=link("a", '<inertial><mass value="1"/></inertial>')), 'link "a"', "<inertia>")
         self.assert_error(chain(link_a=link("a", '<inertial><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
                                                  '</inertial>')), 'link "a"', "<mass>")
         self.assert_error(chain(link_a=link("a", inertial(tensor='ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0"'))),
                           'link "a"', "izz")
-        bad_pd = 'ixx="0.1" ixy="0.2" ixz="0" iyy="0.1" iyz="0" izz="0.1"'
-        self.assert_error(chain(link_b=link("b", inertial(tensor=bad_pd))), 'link "b"', "not positive definite")
-        bad_triangle = 'ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.3"'
-        self.assert_error(chain(link_b=link("b", inertial(tensor=bad_triangle))), 'link "b"', "triangle inequality")
+        self.assert_error(chain(link_a=link("a", inertial() + inertial())), 'link "a"', "more than one <inertial>")
         # the root is the world: its inertial (even a massless one) is dropped, and it may have none
         header = self.convert(robot(link("base", inertial(mass="0")), joint("ja", "revolute", "base", "a"), link("a")))
         self.assertIn('The root link "base" is the fixed world', header)
-        self.assertIn("(mass 0.0) is dropped", header)
-        # but with --floating-base the root is a body and needs a good one
-        self.assert_error(chain(), 'link "base"', "no <inertial>", args=("--floating-base",))
+        self.assertIn('their inertia dropped: "base" (mass 0.0)', header)
+
+    def test_massless_links_and_subtrees(self):
+        # a massless link whose subtree has mass loads: a zero body built as given
+        header = self.convert(chain(link_a=link("a", "")))
+        m, c, I, as_given = mass_properties(body_block(header, 0))
+        self.assertEqual((m, c, I, as_given), (0.0, [0.0] * 3, [[0.0] * 3] * 3, True))
+        self.assertIn("if (const int b = ctga::chains::massless_subtree(m); b >= 0) return {{}, "
+                      "ctga::error_code::massless_subtree};\n    return {m, ctga::error_code::none};", header)
+        header = self.convert(chain(link_a=link("a", inertial(mass="0.0", tensor=tensor_attrs(0.0, 0.0, 0.0)))))
+        self.assertEqual(mass_properties(body_block(header, 0))[0], 0.0)
+        # a moving joint with no mass anywhere below it: an error naming the joint
+        needle = "no mass in its subtree: the mass matrix would be singular and ABA would divide by zero"
+        self.assert_error(chain(link_b=link("b", "")), 'joint "jb"', needle)
+        self.assert_error(chain(link_b=link("b", inertial(mass="0"))), 'joint "jb"', needle)
+        self.assert_error(chain(link_a=link("a", ""), link_b=link("b", "")), 'joint "ja"', needle)
+        # mass on a fixed child counts (it is merged into the body); a massless fixed leaf is fine
+        text = chain(link_b=link("b", "")).replace("</robot>", joint("jt", "fixed", "b", "t") + link("t") + "</robot>")
+        self.assertEqual(len(tree_lines(self.convert(text))), 2)
+        text = chain().replace("</robot>", joint("jt", "fixed", "b", "t") + link("t", "") + "</robot>")
+        self.convert(text)
+        # --keep-fixed: a massless fixed body is fine, the moving joint above it still needs mass
+        text = chain(link_b=link("b", "")).replace("</robot>",
+                                                   joint("jt", "fixed", "b", "t") + link("t", "") + "</robot>")
+        self.assert_error(text, 'joint "jb"', needle, args=("--keep-fixed",))
+        # the floating base: a robot with no mass at all
+        self.assert_error(robot(link("base", ""), joint("j", "fixed", "base", "t"), link("t", "")), 'joint "base"',
+                          needle, args=("--floating-base",))
 
     def test_zero_axis(self):
         self.assert_error(chain(joint_b=joint("jb", "revolute", "a", "b", axis="0 0 0")), 'joint "jb"', "axis is zero")
         self.assert_error(chain(joint_b=joint("jb", "prismatic", "a", "b", axis="0.0 -0 0e3")), 'joint "jb"',
                           "axis is zero")
+        self.assert_error(chain(joint_b=joint("jb", "planar", "a", "b", axis="0 0 0")), 'joint "jb"', "axis is zero")
 
     def test_malformed_numbers(self):
         cases = [
@@ -150,20 +325,19 @@ class Converter(unittest.TestCase):
             (joint("jb", "revolute", "a", "b", xyz="inf 0 0"), "<origin xyz>"),
             (joint("jb", "revolute", "a", "b", axis="0 1_0 0"), "<axis xyz>"),
             (joint("jb", "revolute", "a", "b", axis="0,0,1"), "<axis xyz>"),
+            (joint("jb", "revolute", "a", "b", extra='<mimic joint="ja" multiplier="two"/>'), "<mimic multiplier>"),
+            (joint("jb", "revolute", "a", "b", extra='<mimic joint="ja" offset="1e999"/>'), "<mimic offset>"),
         ]
         for j, where in cases:
             with self.subTest(where=where, joint=j):
                 self.assert_error(chain(joint_b=j), 'joint "jb"', where)
         self.assert_error(chain(link_b=link("b", inertial(mass="1kg"))), 'link "b"', "<mass value>", "'1kg'")
+        self.assert_error(chain(link_b=link("b", inertial(mass="nan"))), 'link "b"', "<mass value>")
         self.assert_error(chain(link_b=link("b", inertial(xyz="0 0 1e999"))), 'link "b"', "<origin xyz>")
         self.assert_error(chain(link_b=link("b", inertial(tensor='ixx="a" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"'))),
                           'link "b"', "ixx")
         self.assert_error(chain(), "--gravity", args=("--gravity", "0", "0", "nan"))
         self.assert_error(chain() + "<oops", "not well-formed XML")
-
-    def test_mimic(self):
-        j = joint("jb", "revolute", "a", "b", extra='<mimic joint="ja" multiplier="1"/>')
-        self.assert_error(chain(joint_b=j), 'joint "jb"', "<mimic> is not supported")
 
     def test_duplicates_and_names(self):
         self.assert_error(chain() .replace("</robot>", link("a") + "</robot>"), 'link "a" is defined twice')
@@ -173,18 +347,14 @@ class Converter(unittest.TestCase):
         self.assertEqual(rc, 1)
         self.assertIn("--name", err)
 
-    # ---- good URDFs ---------------------------------------------------------------------------
-
-    def tree_lines(self, header):
-        body = header[header.index("using tree = ctga::chains::tree<"):header.index(">;") + 2]
-        return re.findall(r"ctga::chains::link<(-?\d+), ctga::chains::(\w+)>", body)
+    # ---- joints --------------------------------------------------------------------------------
 
     def test_joint_types_and_order(self):
         text = robot(
             link("base", inertial(mass="7")),  # dropped: the world
             joint("j_rz", "revolute", "base", "a", axis="0 0 2"),          # normalised: exactly +z
             link("a"),
-            joint("j_cont", "continuous", "a", "b", axis="0 -1 0"),        # -y: not +y
+            joint("j_cont", "continuous", "a", "b", axis="0 -1 0"),        # exactly -y
             link("b"),
             joint("j_py", "prismatic", "a", "c", axis="0 1 0"),
             link("c"),
@@ -199,27 +369,25 @@ class Converter(unittest.TestCase):
             joint("j_default", "revolute", "g", "h", axis=None),           # URDF's default axis: 1 0 0
             link("h"),
         )
-        header = self.convert(text)
+        header = self.convert(text, "--keep-fixed")
         # depth first from the root, children in document order: a (b (d), c), e (f (g (h)))
-        self.assertEqual(self.tree_lines(header), [
-            ("-1", "revolute_z"), ("0", "revolute_about"), ("1", "revolute_about"), ("0", "prismatic_y"),
-            ("-1", "fixed"), ("4", "prismatic_along"), ("5", "floating"), ("6", "revolute_x")])
-        self.assertIn('body_names{\n    "a",\n    "b",\n    "d",\n    "c",\n    "e",\n    "f",\n    "g",\n    "h",\n};',
-                      header)
-        self.assertIn('joint_names{\n    "j_rz",\n    "j_cont",\n    "j_gen",\n    "j_py",\n    "j_fix",\n    "j_pa",\n'
-                      '    "j_free",\n    "j_default",\n};', header)
+        self.assertEqual(tree_lines(header), [
+            ("-1", "revolute_z"), ("0", "revolute<ctga::chains::axis::minus_y>"), ("1", "revolute_about"),
+            ("0", "prismatic_y"), ("-1", "fixed"), ("4", "prismatic_along"), ("5", "floating"), ("6", "revolute_x")])
+        self.assertEqual(names(header, "body_names"), ["a", "b", "d", "c", "e", "f", "g", "h"])
+        self.assertEqual(names(header, "joint_names"), ["j_rz", "j_cont", "j_gen", "j_py", "j_fix", "j_pa", "j_free",
+                                                        "j_default"])
         self.assertIn("ctga::vec3<T>{T(0.0), T(0.6), T(0.8)});", header)
-        self.assertIn("ctga::vec3<T>{T(0.0), T(-1.0), T(0.0)});", header)
         s = 1 / math.sqrt(2)
         self.assertIn(f"ctga::vec3<T>{{T({s!r}), T({s!r}), T(0.0)}});", header)
         # only the joints whose axis is a run-time parameter pass one to make_link (for the
         # others their type fixes it, and make_link refuses an axis)
-        for body in range(8):
-            takes_axis = self.tree_lines(header)[body][1] in ("revolute_about", "prismatic_along")
-            self.assertEqual("ctga::vec3<T>{" in self.body_block(header, body).split("make_mass_properties")[1]
-                             .split("if (!x)")[0].split("ctga::mat3<T>")[1], takes_axis, body)
-        self.assertIn("(mass 7.0) is dropped", header)
+        for body, (_, kind) in enumerate(tree_lines(header)):
+            takes_axis = kind in ("revolute_about", "prismatic_along")
+            self.assertEqual("ctga::vec3<T>{" in extra_args(body_block(header, body)), takes_axis, body)
+        self.assertIn('their inertia dropped: "base" (mass 7.0)', header)
         self.assertIn("Ignored: joint limits", header)
+        self.assertIn("--keep-fixed", header.splitlines()[1])
         self.assertIn("m.gravity = ctga::vec3<T>{T(0.0), T(0.0), T(-9.81)};", header)
         self.assertTrue(header.startswith("// Generated by tools/urdf_to_ctga.py from robot.urdf; do not edit.\n"))
         for needed in ("#pragma once", "#include <array>", "#include <string_view>", "#include <ctga/ctga.hpp>",
@@ -229,63 +397,197 @@ class Converter(unittest.TestCase):
                        "if (!x) return {{}, x.error};", "m.template link<7>() = *x;",
                        "return {m, ctga::error_code::none};"):
             self.assertIn(needed, header)
+        # by default the fixed link e is merged into the world: no body, a frame; f hangs on the world
+        header = self.convert(text)
+        self.assertEqual(tree_lines(header), [
+            ("-1", "revolute_z"), ("0", "revolute<ctga::chains::axis::minus_y>"), ("1", "revolute_about"),
+            ("0", "prismatic_y"), ("-1", "prismatic_along"), ("4", "floating"), ("5", "revolute_x")])
+        self.assertEqual(frame_lines(header), [("base", -1), ("a", 0), ("b", 1), ("d", 2), ("c", 3), ("e", -1),
+                                               ("f", 4), ("g", 5), ("h", 6)])
+
+    def test_minus_axes(self):
+        for kind, prefix in (("revolute", "revolute"), ("continuous", "revolute"), ("prismatic", "prismatic")):
+            for axis, letter in (("-1 0 0", "x"), ("0 -2.5 0", "y"), ("0 0 -1e-3", "z"), ("-0 0 -1", "z")):
+                with self.subTest(kind=kind, axis=axis):
+                    header = self.convert(chain(joint_b=joint("jb", kind, "a", "b", axis=axis)))
+                    self.assertEqual(tree_lines(header)[1], ("0", f"{prefix}<ctga::chains::axis::minus_{letter}>"))
+                    self.assertNotIn("ctga::vec3<T>{", extra_args(body_block(header, 1)))
+        # not exactly a coordinate axis: the general joint with the normalised axis
+        header = self.convert(chain(joint_b=joint("jb", "revolute", "a", "b", axis="1e-9 0 -1")))
+        self.assertEqual(tree_lines(header)[1], ("0", "revolute_about"))
 
     def test_floating_base_gravity_namespace(self):
         header = self.convert(chain(base=link("base")), "--floating-base", "--gravity", "0", "-9.8", "0",
                               "--namespace", "robots::mine")
-        self.assertEqual(self.tree_lines(header), [("-1", "floating"), ("0", "revolute_z"), ("1", "revolute_y")])
-        self.assertIn('joint_names{\n    "floating_base",\n    "ja",\n    "jb",\n};', header)
-        self.assertIn('body_names{\n    "base",\n    "a",\n    "b",\n};', header)
+        self.assertEqual(tree_lines(header), [("-1", "floating"), ("0", "revolute_z"), ("1", "revolute_y")])
+        self.assertEqual(names(header, "joint_names"), ["base", "ja", "jb"])
+        self.assertEqual(names(header, "body_names"), ["base", "a", "b"])
+        self.assertEqual(frame_lines(header), [("base", 0), ("a", 1), ("b", 2)])
         self.assertIn("m.gravity = ctga::vec3<T>{T(0.0), T(-9.8), T(0.0)};", header)
         self.assertIn("namespace robots::mine {", header)
-        # a URDF joint already called floating_base: the base joint's name stays unique
-        text = chain(joint_a=joint("floating_base", "revolute", "base", "a"), base=link("base"))
+        self.assertIn('The root link "base" is body 0 on a floating joint named "base"', header)
+        # a URDF joint already called like the root link: the base joint's name stays unique
+        text = chain(joint_a=joint("base", "revolute", "base", "a"), base=link("base"))
         header = self.convert(text, "--floating-base")
-        self.assertIn('joint_names{\n    "floating_base_",\n    "floating_base",\n', header)
+        self.assertEqual(names(header, "joint_names"), ["base_joint", "base", "jb"])
+        text = chain(joint_a=joint("base", "revolute", "base", "a"), joint_b=joint("base_joint", "revolute", "a", "b"),
+                     base=link("base"))
+        self.assertEqual(names(self.convert(text, "--floating-base"), "joint_names"),
+                         ["base_joint_joint", "base", "base_joint"])
+        # the root link without <inertial>: a massless body 0, its subtree has mass
+        header = self.convert(chain(), "--floating-base")
+        self.assertEqual(mass_properties(body_block(header, 0))[0], 0.0)
 
     def test_names_are_escaped(self):
         text = chain(link_b='<link name="b &quot;quoted&quot; \\ é">' + inertial() + "</link>",
                      joint_b=joint("jb", "revolute", "a", 'b &quot;quoted&quot; \\ é'))
         header = self.convert(text)
         self.assertIn('"b \\"quoted\\" \\\\ \\303\\251",', header)
+        self.assertIn('ctga::chains::fixed_frame<"b \\"quoted\\" \\\\ \\303\\251", 1>>;', header)
+
+    # ---- planar joints -----------------------------------------------------------------------------
+
+    def planar(self, axis, *args):
+        """chain() with ja a planar joint "slide" (normal `axis`; None: no <axis>)."""
+        j = joint("slide", "planar", "base", "a", xyz="0.5 -0.25 0.125", rpy="0.1 0.2 0.3", axis=axis)
+        return self.convert(chain(joint_a=j), *args)
+
+    def test_planar_coordinate_normals(self):
+        cases = {
+            "0 0 1": ("prismatic_x", "prismatic_y", "revolute_z"),
+            "0 0 -1": ("prismatic_x", "prismatic<ctga::chains::axis::minus_y>",
+                       "revolute<ctga::chains::axis::minus_z>"),
+            "1 0 0": ("prismatic_y", "prismatic_z", "revolute_x"),
+            None: ("prismatic_y", "prismatic_z", "revolute_x"),  # URDF's default axis 1 0 0
+            "0 2 0": ("prismatic_z", "prismatic_x", "revolute_y"),
+            "0 -1 0": ("prismatic_z", "prismatic<ctga::chains::axis::minus_x>",
+                       "revolute<ctga::chains::axis::minus_y>"),
+            "-1 0 0": ("prismatic_y", "prismatic<ctga::chains::axis::minus_z>",
+                       "revolute<ctga::chains::axis::minus_x>"),
+        }
+        unit = {"x": [1.0, 0, 0], "y": [0, 1.0, 0], "z": [0, 0, 1.0]}
+        for axis, types in cases.items():
+            with self.subTest(axis=axis):
+                header = self.planar(axis)
+                lines = tree_lines(header)
+                self.assertEqual(lines, [("-1", types[0]), ("0", types[1]), ("1", types[2]), ("2", "revolute_y")])
+                self.assertEqual(names(header, "body_names"), ["slide_x", "slide_y", "a", "b"])
+                self.assertEqual(names(header, "joint_names"), ["slide_x", "slide_y", "slide", "jb"])
+                self.assertEqual(frame_lines(header), [("base", -1), ("a", 2), ("b", 3)])
+                # the first body carries the joint's origin, the other two identity placements
+                t, theta, u = motor(body_block(header, 0))
+                self.assertEqual(t, [0.5, -0.25, 0.125])
+                self.assert_rotation(theta, u, rpy_matrix_here(0.1, 0.2, 0.3))
+                for b in (1, 2):
+                    self.assertEqual(motor(body_block(header, b))[:2], ([0.0, 0.0, 0.0], 0.0))
+                # the two translations are virtual (massless), the child link carries the mass
+                self.assertEqual(mass_properties(body_block(header, 0))[0], 0.0)
+                self.assertEqual(mass_properties(body_block(header, 1))[0], 0.0)
+                self.assertEqual(mass_properties(body_block(header, 2))[0], 1.0)
+                # (u1, u2, n) right-handed
+                axes = []
+                for t in types:
+                    m = re.search(r"_([xyz])$", t) or re.search(r"minus_([xyz])>$", t)
+                    v = list(unit[m.group(1)])
+                    axes.append([-c for c in v] if "minus" in t else v)
+                self.assertEqual(cross3(axes[0], axes[1]), axes[2])
+                self.assertEqual(dofs(lines), 4)
+
+    def test_planar_general_normal(self):
+        header = self.planar("1 2 2")
+        self.assertEqual(tree_lines(header), [("-1", "prismatic_along"), ("0", "prismatic_along"),
+                                              ("1", "revolute_about"), ("2", "revolute_y")])
+        u1, u2, n = (numbers(extra_args(body_block(header, b))) for b in range(3))
+        self.assert_close(n, [1 / 3, 2 / 3, 2 / 3], 1e-15)
+        for v in (u1, u2, n):
+            self.assert_close(sum(x * x for x in v), 1.0, 1e-15)
+        for a, b in ((u1, u2), (u1, n), (u2, n)):
+            self.assert_close(sum(x * y for x, y in zip(a, b)), 0.0, 1e-15)
+        self.assert_close(cross3(u1, u2), n, 1e-15)
+
+    def test_planar_names_and_errors(self):
+        # the virtual bodies' names avoid the URDF's names
+        text = chain(joint_a=joint("p", "planar", "base", "a")).replace("</robot>", link("p_x", "") + "</robot>")
+        text = text.replace("</robot>", joint("jx", "fixed", "b", "p_x") + "</robot>")
+        header = self.convert(text)
+        self.assertEqual(names(header, "body_names")[:3], ["p_x_", "p_y", "a"])
+        # a massless planar subtree names the URDF joint
+        self.assert_error(robot(link("base", ""), joint("p", "planar", "base", "a"), link("a", "")), 'joint "p"',
+                          "no mass in its subtree")
+
+    # ---- mimic ------------------------------------------------------------------------------------
+
+    def gripper(self, mimic='<mimic joint="left" multiplier="-1" offset="0.01"/>', kind="prismatic", extra=""):
+        return robot(link("base", ""), joint("ja", "revolute", "base", "hand"), link("hand"),
+                     joint("right", kind, "hand", "fr", axis="0 -1 0", extra=mimic), link("fr"),
+                     joint("left", "prismatic", "hand", "fl", axis="0 1 0"), link("fl"), extra)
+
+    def test_mimic(self):
+        header = self.convert(self.gripper())
+        # the mimic comes first in depth-first order; its master body (3) may come after it
+        self.assertEqual(tree_lines(header), [("-1", "revolute_z"),
+                                              ("0", "mimic<ctga::chains::prismatic<ctga::chains::axis::minus_y>, 2>"),
+                                              ("0", "prismatic_y")])
+        self.assertIn("ctga::chains::make_link<ctga::chains::mimic<"
+                      "ctga::chains::prismatic<ctga::chains::axis::minus_y>, 2>>(", header)
+        self.assertEqual(extra_args(body_block(header, 1)).strip(),
+                         "),\n            ctga::chains::coupling<T>{T(-1.0), T(0.01)});")
+        self.assertEqual(dofs(tree_lines(header)), 2)
+        # the defaults: multiplier 1, offset 0; a revolute_about mimic passes coupling, then axis
+        header = self.convert(self.gripper('<mimic joint="left"/>', kind="revolute").replace('axis xyz="0 -1 0"',
+                                                                                              'axis xyz="0 3 4"'))
+        self.assertEqual(tree_lines(header)[1], ("0", "mimic<ctga::chains::revolute_about, 2>"))
+        self.assertEqual(extra_args(body_block(header, 1)).strip(),
+                         "),\n            ctga::chains::coupling<T>{T(1.0), T(0.0)},\n"
+                         "            ctga::vec3<T>{T(0.0), T(0.6), T(0.8)});")
+        # --mimic independent: an ordinary joint with its own coordinate, said in the header
+        header = self.convert(self.gripper(), "--mimic", "independent")
+        self.assertEqual(tree_lines(header)[1], ("0", "prismatic<ctga::chains::axis::minus_y>"))
+        self.assertNotIn("coupling", header)
+        self.assertIn('--mimic independent: the <mimic> joints "right" are independent coordinates', header)
+        self.assertEqual(dofs(tree_lines(header)), 3)
+
+    def test_mimic_errors(self):
+        self.assert_error(self.gripper('<mimic joint="nobody"/>'), 'joint "right"', '<mimic joint="nobody">',
+                          "no such joint")
+        self.assert_error(self.gripper('<mimic/>'), 'joint "right"', "<mimic> without joint")
+        # the master is not a 1-dof joint
+        text = self.gripper('<mimic joint="jt"/>', extra=joint("jt", "fixed", "hand", "t") + link("t"))
+        self.assert_error(text, 'joint "right"', '<mimic joint="jt">', "fixed joint")
+        text = self.gripper('<mimic joint="jf"/>', extra=joint("jf", "floating", "hand", "t") + link("t"))
+        self.assert_error(text, 'joint "right"', "floating joint")
+        # the master is itself a mimic
+        text = self.gripper().replace('<axis xyz="0 1 0"/>', '<axis xyz="0 1 0"/><mimic joint="ja"/>')
+        self.assert_error(text, 'joint "right"', '<mimic joint="left">', 'the master itself mimics "ja"')
+        self.assert_error(self.gripper('<mimic joint="right"/>'), 'joint "right"', "the master itself mimics")
+        # a mimic on a joint without one coordinate
+        for kind in ("fixed", "floating", "planar"):
+            with self.subTest(kind=kind):
+                self.assert_error(self.gripper('<mimic joint="left"/>', kind=kind), 'joint "right"',
+                                  f"<mimic> on a {kind} joint")
+        # --mimic independent ignores the element (once its numbers parse)
+        self.convert(self.gripper('<mimic joint="nobody"/>'), "--mimic", "independent")
 
     # ---- numbers ------------------------------------------------------------------------------
-
-    @staticmethod
-    def numbers(s):
-        return [float(x) for x in re.findall(r"T\(([^()]*)\)", s)]
-
-    def body_block(self, header, index):
-        start = header.index(f"{{  // body {index}:")
-        return header[start:header.index("m.template link<", start)]
 
     def test_placement_rotation(self):
         # the emitted (u, theta) must give Rz(yaw) Ry(pitch) Rx(roll), computed here independently
         for rpy in [(0.1, -0.2, 0.3), (math.pi / 2, 0, 0), (0, 0, math.pi), (3.0, 1.2, -2.5), (0, 0, 0)]:
             with self.subTest(rpy=rpy):
-                header = self.convert(chain(joint_a=joint("ja", "fixed", "base", "a", xyz="1 2 3",
+                header = self.convert(chain(joint_a=joint("ja", "revolute", "base", "a", xyz="1 2 3",
                                                           rpy=" ".join(repr(a) for a in rpy))))
-                block = self.body_block(header, 0)
-                call = block[block.index("ctga::make_translator("):block.index("ctga::make_mass_properties")]
-                t = self.numbers(call[:call.index("ctga::make_rotor(")])
-                theta, ux, uy, uz = self.numbers(call[call.index("ctga::make_rotor("):])
+                t, theta, u = motor(body_block(header, 0))
                 self.assertEqual(t, [1.0, 2.0, 3.0])
-                self.assertAlmostEqual(ux * ux + uy * uy + uz * uz, 1.0, places=15)
-                expected = rpy_matrix_here(*rpy)
-                got = rodrigues(ux, uy, uz, theta)
-                for r in range(3):
-                    for c in range(3):
-                        self.assertAlmostEqual(got[r][c], expected[r][c], places=14)
+                self.assert_rotation(theta, u, rpy_matrix_here(*rpy))
 
     def test_inertia_rotation(self):
         # a quarter turn of the inertial frame about z swaps ixx and iyy and negates ixy
         tensor = 'ixx="0.1" ixy="0.01" ixz="0.02" iyy="0.2" iyz="0.03" izz="0.25"'
         header = self.convert(chain(link_a=link("a", inertial(mass="2", xyz="0.1 0.2 0.3", rpy=f"0 0 {math.pi / 2!r}",
                                                               tensor=tensor))))
-        block = self.body_block(header, 0)
-        mp = self.numbers(block[block.index("ctga::make_mass_properties("):block.index("if (!x)")])[:13]
-        mass, com, I = mp[0], mp[1:4], [mp[4:7], mp[7:10], mp[10:13]]
+        mass, com, I, as_given = mass_properties(body_block(header, 0))
         self.assertEqual(mass, 2.0)
+        self.assertTrue(as_given)
         self.assertEqual(com, [0.1, 0.2, 0.3])  # the com is the inertial origin, not rotated
         expected = [[0.2, -0.01, -0.03], [-0.01, 0.1, 0.02], [-0.03, 0.02, 0.25]]
         for r in range(3):
@@ -295,19 +597,308 @@ class Converter(unittest.TestCase):
         # and a general rotation, R I Rᵀ, against the matrices computed here
         rpy = (0.3, -0.4, 1.1)
         header = self.convert(chain(link_a=link("a", inertial(rpy=" ".join(map(repr, rpy)), tensor=tensor))))
-        block = self.body_block(header, 0)
-        mp = self.numbers(block[block.index("ctga::make_mass_properties("):block.index("if (!x)")])[:13]
+        I = mass_properties(body_block(header, 0))[2]
         R = rpy_matrix_here(*rpy)
         I0 = [[0.1, 0.01, 0.02], [0.01, 0.2, 0.03], [0.02, 0.03, 0.25]]
-        RI = [[sum(R[i][k] * I0[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
-        expected = [[sum(RI[i][k] * R[j][k] for k in range(3)) for j in range(3)] for i in range(3)]
-        for r in range(3):
-            for c in range(3):
-                self.assertAlmostEqual(mp[4 + 3 * r + c], expected[r][c], places=15)
+        self.assert_close(I, mm(mm(R, I0), tr(R)), 1e-15)
 
     def test_numbers_keep_full_precision(self):
         header = self.convert(chain(joint_b=joint("jb", "revolute", "a", "b", xyz="0.1 0.30000000000000004 1e-7")))
         self.assertIn("ctga::make_translator(T(0.1), T(0.30000000000000004), T(1e-07))", header)
+        # a body without merged links keeps the URDF's numbers exactly
+        header = self.convert(chain(link_b=link("b", inertial(mass="0.30000000000000004", xyz="0.1 0.2 0.7",
+                                                              tensor=tensor_attrs(0.1, 0.2, 0.25, 0.01)))))
+        self.assertEqual(mass_properties(body_block(header, 1))[:3],
+                         (0.30000000000000004, [0.1, 0.2, 0.7], [[0.1, 0.01, 0.0], [0.01, 0.2, 0.0], [0.0, 0.0, 0.25]]))
+
+    # ---- merging fixed joints and frames -----------------------------------------------------------
+
+    # a (revolute) carries c (fixed, rotated and offset), c carries d (fixed) and the massless g;
+    # d carries e on a revolute joint; inertial frames rotated
+    MERGE_PARTS = {
+        # link: (mass, com, rpy of the inertial frame, (ixx, iyy, izz, ixy, ixz, iyz))
+        "a": (2.0, [0.1, 0.0, 0.05], (0.0, 0.0, 0.0), (0.03, 0.04, 0.05, 0.001, -0.002, 0.003)),
+        "c": (1.5, [0.01, 0.02, -0.03], (0.1, 0.2, 0.3), (0.01, 0.012, 0.015, 0.0005, 0.0, -0.001)),
+        "d": (0.5, [0.0, 0.0, 0.02], (0.0, 0.0, 0.0), (0.002, 0.002, 0.001, 0.0, 0.0, 0.0)),
+        "e": (1.0, [0.0, 0.0, 0.1], (0.0, 0.0, 0.0), (0.01, 0.01, 0.002, 0.0, 0.0, 0.0)),
+    }
+    MERGE_JOINTS = {  # child: (name, kind, parent, xyz, rpy)
+        "a": ("ja", "revolute", "base", (0.0, 0.0, 0.1), (0.0, 0.0, 0.0)),
+        "c": ("jc", "fixed", "a", (0.2, -0.1, 0.3), (0.3, -0.2, 0.5)),
+        "g": ("jg", "fixed", "a", (0.0, 0.05, 0.0), (0.0, 0.0, 1.0)),
+        "d": ("jd", "fixed", "c", (0.0, 0.0, 0.1), (0.0, 0.0, math.pi / 2)),
+        "e": ("je", "revolute", "d", (0.05, 0.0, 0.2), (0.4, 0.0, 0.0)),
+    }
+
+    def merge_robot(self):
+        parts = [link("base", "")]
+        for child, (name, kind, parent, xyz, rpy) in self.MERGE_JOINTS.items():
+            parts.append(joint(name, kind, parent, child, xyz=" ".join(map(repr, xyz)), rpy=" ".join(map(repr, rpy)),
+                               axis="0 1 0"))
+            if child in self.MERGE_PARTS:
+                m, c, irpy, (ixx, iyy, izz, ixy, ixz, iyz) = self.MERGE_PARTS[child]
+                parts.append(link(child, inertial(repr(m), " ".join(map(repr, c)), " ".join(map(repr, irpy)),
+                                                  tensor_attrs(ixx, iyy, izz, ixy, ixz, iyz))))
+            else:
+                parts.append(link(child, ""))
+        return robot(*parts)
+
+    def pose_in_a(self, link_name):
+        """(R, p) of a link in a's frame, composing the fixed joints here."""
+        R, p = eye(), [0.0, 0.0, 0.0]
+        chain_ = []
+        while link_name != "a":
+            chain_.append(link_name)
+            link_name = self.MERGE_JOINTS[link_name][2]
+        for l in reversed(chain_):
+            _, _, _, xyz, rpy = self.MERGE_JOINTS[l]
+            p = [p[i] + mv(R, xyz)[i] for i in range(3)]
+            R = mm(R, rpy_matrix_here(*rpy))
+        return R, p
+
+    def test_merged_inertia(self):
+        header = self.convert(self.merge_robot())
+        self.assertEqual(tree_lines(header), [("-1", "revolute_y"), ("0", "revolute_y")])
+        self.assertEqual(names(header, "body_names"), ["a", "e"])
+        mass, com, I, as_given = mass_properties(body_block(header, 0))
+        self.assertTrue(as_given)
+        # the parts in a's frame, computed here
+        parts = []
+        for l in ("a", "c", "d"):
+            m, c, irpy, (ixx, iyy, izz, ixy, ixz, iyz) = self.MERGE_PARTS[l]
+            R, p = self.pose_in_a(l)
+            Ri = mm(R, rpy_matrix_here(*irpy))
+            Il = [[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]]
+            parts.append((m, [p[i] + mv(R, c)[i] for i in range(3)], mm(mm(Ri, Il), tr(Ri))))
+        # invariants: total mass, first moment, inertia about a's origin (additive)
+        self.assert_close(mass, sum(m for m, _, _ in parts))
+        self.assert_close([mass * x for x in com], [sum(m * c[i] for m, c, _ in parts) for i in range(3)])
+        Io = [[sum(about_origin(*pt)[i][j] for pt in parts) for j in range(3)] for i in range(3)]
+        self.assert_close(about_origin(mass, com, I), Io)
+        # and the tensor about the combined centre of mass, by the parallel-axis theorem
+        expected = [[sum(Ik[i][j] + m * (sum((ck[n] - com[n]) ** 2 for n in range(3)) * (i == j) -
+                                         (ck[i] - com[i]) * (ck[j] - com[j])) for m, ck, Ik in parts)
+                     for j in range(3)] for i in range(3)]
+        self.assert_close(I, expected)
+        for r in range(3):
+            for c in range(3):
+                self.assertEqual(I[r][c], I[c][r])
+        self.assertIn('// merged: "c", "d", "g"; total mass 4.0', body_block(header, 0))
+        # e's placement goes through the merged links c and d: composed here
+        R, p = self.pose_in_a("d")
+        _, _, _, xyz, rpy = self.MERGE_JOINTS["e"]
+        t, theta, u = motor(body_block(header, 1))
+        self.assert_close(t, [p[i] + mv(R, xyz)[i] for i in range(3)])
+        self.assert_rotation(theta, u, mm(R, rpy_matrix_here(*rpy)))
+        self.assertEqual(mass_properties(body_block(header, 1))[:3],
+                         (1.0, [0.0, 0.0, 0.1], [[0.01, 0.0, 0.0], [0.0, 0.01, 0.0], [0.0, 0.0, 0.002]]))
+
+    def test_frames(self):
+        header = self.convert(self.merge_robot())
+        # every link, depth first, the root first; children in document order (c before g)
+        self.assertEqual(frame_lines(header), [("base", -1), ("a", 0), ("c", 0), ("d", 0), ("e", 1), ("g", 0)])
+        for k, (name, body) in enumerate(frame_lines(header)):
+            with self.subTest(frame=name):
+                block = frame_block(header, k)
+                self.assertIn(f"ctga::chains::make_frame<T>(", block)
+                self.assertIn("if (!f) return {{}, f.error};", block)
+                t, theta, u = motor(block)
+                if name in ("base", "a", "e"):  # a body's own link (or the world's root): identity
+                    self.assertEqual((t, theta, u), ([0.0] * 3, 0.0, [0.0, 0.0, 1.0]))
+                    continue
+                R, p = self.pose_in_a(name)
+                self.assert_close(t, p)
+                self.assert_rotation(theta, u, R)
+        self.assertIn('// frame 3: link "d" in body 0 (through "jc", "jd")', header)
+        # every frame is set, after the links and before the massless-subtree check
+        self.assertLess(header.index("m.template link<1>() = *x;"), header.index("m.frames[0] = *f;"))
+        self.assertLess(header.index("m.frames[5] = *f;"), header.index("ctga::chains::massless_subtree(m)"))
+        # links fixed to the world's root are frames of the world, placed in it
+        text = robot(link("world", ""), joint("j0", "fixed", "world", "plate", xyz="1 0 0", rpy="0 0 0.5"),
+                     link("plate", inertial(mass="3")), joint("j1", "revolute", "plate", "arm", xyz="0 2 0"),
+                     link("arm"))
+        header = self.convert(text)
+        self.assertEqual(frame_lines(header), [("world", -1), ("plate", -1), ("arm", 0)])
+        self.assertIn('their inertia dropped: "plate" (mass 3.0)', header)
+        t, theta, u = motor(frame_block(header, 1))
+        self.assertEqual(t, [1.0, 0.0, 0.0])
+        self.assert_rotation(theta, u, rpy_matrix_here(0, 0, 0.5))
+        t, theta, u = motor(body_block(header, 0))
+        self.assert_close(t, [1 - 2 * math.sin(0.5), 2 * math.cos(0.5), 0.0])
+
+    def test_keep_fixed(self):
+        header = self.convert(self.merge_robot(), "--keep-fixed")
+        self.assertEqual(tree_lines(header), [("-1", "revolute_y"), ("0", "fixed"), ("1", "fixed"), ("2", "revolute_y"),
+                                              ("0", "fixed")])
+        self.assertEqual(names(header, "body_names"), ["a", "c", "d", "e", "g"])
+        self.assertEqual(names(header, "joint_names"), ["ja", "jc", "jd", "je", "jg"])
+        self.assertEqual(frame_lines(header), [("base", -1), ("a", 0), ("c", 1), ("d", 2), ("e", 3), ("g", 4)])
+        for k in range(6):
+            self.assertEqual(motor(frame_block(header, k))[:2], ([0.0] * 3, 0.0))
+        # each body keeps its own link's numbers; the massless g is a massless body
+        m, c, irpy, _ = self.MERGE_PARTS["c"]
+        self.assertEqual(mass_properties(body_block(header, 1))[:2], (m, c))
+        self.assertEqual(mass_properties(body_block(header, 4))[0], 0.0)
+        t, theta, u = motor(body_block(header, 1))
+        self.assertEqual(t, [0.2, -0.1, 0.3])
+        self.assert_rotation(theta, u, rpy_matrix_here(0.3, -0.2, 0.5))
+        self.assertIn("--keep-fixed: every link on a fixed joint is its own body", header)
+
+    # ---- inertia policy ------------------------------------------------------------------------
+
+    def test_questionable_inertia_warns(self):
+        bad_triangle = tensor_attrs(0.1, 0.1, 0.3)
+        header, lines = self.convert_warned(chain(link_b=link("b", inertial(tensor=bad_triangle))))
+        self.assertEqual(lines, ['urdf_to_ctga: warning: link "b": principal moments [0.1, 0.1, 0.3] violate the '
+                                 "triangle inequality I_i <= I_j + I_k"])
+        self.assertTrue(mass_properties(body_block(header, 1))[3])
+        self.assertIn('// Warning: link "b": principal moments [0.1, 0.1, 0.3] violate', header)
+        bad_pd = 'ixx="0.1" ixy="0.2" ixz="0" iyy="0.1" iyz="0" izz="0.1"'  # moments -0.1, 0.1, 0.3
+        _, lines = self.convert_warned(chain(link_b=link("b", inertial(tensor=bad_pd))))
+        self.assertEqual(len(lines), 1)
+        self.assertIn('link "b": principal moments [-0.1, 0.1, 0.3] are not all positive', lines[0])
+        # a merged link is named (not only its body), and so is the lumped body when it stays bad
+        text = chain().replace("</robot>", joint("jcam", "fixed", "b", "camera") +
+                               link("camera", inertial(mass="0.01", tensor=tensor_attrs(1e-4, 1e-4, 5e-4))) +
+                               "</robot>")
+        _, lines = self.convert_warned(text)
+        self.assertEqual(len(lines), 1)
+        self.assertIn('link "camera": principal moments [0.0001, 0.0001, 0.0005] violate', lines[0])
+        text = chain(link_b=link("b", inertial(tensor=tensor_attrs(1e-3, 1e-3, 5e-3)))).replace(
+            "</robot>", joint("jcam", "fixed", "b", "camera") +
+            link("camera", inertial(mass="1", tensor=tensor_attrs(1e-3, 1e-3, 5e-3))) + "</robot>")
+        _, lines = self.convert_warned(text)
+        self.assertEqual(len(lines), 3)
+        self.assertIn('body 1 "b" (link "b" with the merged links "camera"): lumped principal moments', lines[2])
+        # mass 0 with a tensor: massless, with a warning
+        _, lines = self.convert_warned(chain().replace(
+            "</robot>", joint("jt", "fixed", "b", "t") + link("t", inertial(mass="0")) + "</robot>"))
+        self.assertEqual(lines, ['urdf_to_ctga: warning: link "t": mass 0 with a nonzero inertia tensor '
+                                 "(taken as massless)"])
+        # inertia lumped into the world is not checked (it is dropped)
+        self.convert(robot(link("base", inertial(tensor=bad_triangle)), joint("ja", "revolute", "base", "a"),
+                           link("a")))
+
+    def test_rounding_level_negatives_are_not_warned(self):
+        rod = tensor_attrs(0.006, 0.006, -4e-22)
+        header = self.convert(chain(link_b=link("b", inertial(tensor=rod))))
+        self.assertEqual(mass_properties(body_block(header, 1))[2][2][2], -4e-22)
+        lamina = tensor_attrs(0.1, 0.2, 0.30000000000000004)  # I_z = I_x + I_y to rounding
+        self.convert(chain(link_b=link("b", inertial(tensor=lamina))))
+        # a point mass (zero tensor) is no warning either
+        self.convert(chain(link_b=link("b", inertial(tensor=tensor_attrs(0.0, 0.0, 0.0)))))
+        # but just beyond the tolerance 64 eps trace is
+        _, lines = self.convert_warned(chain(link_b=link("b", inertial(tensor=tensor_attrs(0.006, 0.006, -1e-14)))))
+        self.assertIn("are not all positive", lines[0])
+
+    def test_strict(self):
+        self.assert_error(chain(link_b=link("b", inertial(tensor=tensor_attrs(0.1, 0.1, 0.3)))), 'link "b"',
+                          "triangle inequality", "(--strict)", args=("--strict",))
+        self.assert_error(chain().replace("</robot>", joint("jt", "fixed", "b", "t") + link("t", inertial(mass="0")) +
+                                          "</robot>"), 'link "t"', "(--strict)", args=("--strict",))
+        # what ctga's physical check refuses must not reach it: a singular tensor
+        self.assert_error(chain(link_b=link("b", inertial(tensor=tensor_attrs(0.006, 0.006, -4e-22)))), 'body 1 "b"',
+                          "not positive definite", args=("--strict",))
+        self.assert_error(chain(link_b=link("b", inertial(tensor=tensor_attrs(0.0, 0.0, 0.0)))), 'body 1 "b"',
+                          args=("--strict",))
+        # a clean model: the physical check for bodies with mass, as_given only for massless ones
+        header = self.convert(chain(link_a=link("a", "")), "--strict")
+        self.assertTrue(mass_properties(body_block(header, 0))[3])
+        self.assertFalse(mass_properties(body_block(header, 1))[3])
+        self.assertIn("{T(0.0), T(0.0), T(0.1)}}}));", body_block(header, 1))
+        self.assertIn("--strict", header.splitlines()[1])
+
+    # ---- fixtures --------------------------------------------------------------------------------
+
+    def fixture_header(self, name, *args, warnings=0):
+        rc, header, err = self.run_script(fixture(name), *args)
+        self.assertEqual(rc, 0, err)
+        self.assertEqual(len(err.splitlines()), warnings, err)
+        return header, err
+
+    def counts(self, header):
+        types = tree_lines(header)
+        return len(types), len(frame_lines(header)), dofs(types)
+
+    def test_fixture_ur5e(self):
+        header, _ = self.fixture_header("ur5e.urdf")
+        self.assertEqual(self.counts(header), (6, 11, 6))
+        self.assertEqual(tree_lines(header), [(str(i - 1), "revolute_z") for i in range(6)])
+        self.assertEqual(frame_lines(header), [("base_link", -1), ("base_link_inertia", -1), ("shoulder_link", 0),
+                                               ("upper_arm_link", 1), ("forearm_link", 2), ("wrist_1_link", 3),
+                                               ("wrist_2_link", 4), ("wrist_3_link", 5), ("flange", 5), ("tool0", 5),
+                                               ("base", -1)])
+        self.assertIn('their inertia dropped: "base_link_inertia" (mass 4.0)', header)
+        # the shoulder sits 0.1625 m above base_link_inertia, which is yawed by pi in the world
+        t, theta, u = motor(body_block(header, 0))
+        self.assert_close(t, [0.0, 0.0, 0.1625])
+        self.assert_rotation(theta, u, rpy_matrix_here(0, 0, math.pi))
+        # flange: the rotation of its rpy; tool0 (flange then tool0): wrist_3's own axes again
+        t, theta, u = motor(frame_block(header, 8))
+        self.assert_rotation(theta, u, rpy_matrix_here(0, -math.pi / 2, -math.pi / 2))
+        t, theta, u = motor(frame_block(header, 9))
+        self.assertEqual(t, [0.0] * 3)
+        self.assert_rotation(theta, u, eye(), 1e-15)
+        masses = [mass_properties(body_block(header, b))[0] for b in range(6)]
+        self.assertEqual(masses, [3.761, 8.058, 2.846, 1.37, 1.3, 0.365])
+
+    def test_fixture_mobile_gripper(self):
+        header, err = self.fixture_header("mobile_gripper.urdf", warnings=1)
+        self.assertIn('warning: link "camera_link": principal moments [0.0001, 0.0001, 0.0005] violate', err)
+        self.assertEqual(self.counts(header), (9, 11, 8))
+        self.assertEqual(tree_lines(header), [
+            ("-1", "prismatic_x"), ("0", "prismatic_y"), ("1", "revolute_z"), ("2", "revolute_z"),
+            ("3", "revolute<ctga::chains::axis::minus_y>"), ("4", "prismatic<ctga::chains::axis::minus_z>"),
+            ("5", "revolute_about"), ("6", "prismatic_y"), ("6", "mimic<ctga::chains::prismatic_y, 7>")])
+        self.assertEqual(names(header, "body_names"), ["base_planar_x", "base_planar_y", "base_link", "turret",
+                                                       "upper_arm", "forearm_link", "hand", "finger_left",
+                                                       "finger_right"])
+        self.assertEqual(names(header, "joint_names")[:3], ["base_planar_x", "base_planar_y", "base_planar"])
+        self.assertEqual(frame_lines(header), [("odom", -1), ("base_link", 2), ("imu_link", 2), ("camera_link", 2),
+                                               ("turret", 3), ("upper_arm", 4), ("forearm_link", 5), ("hand", 6),
+                                               ("finger_left", 7), ("finger_right", 8), ("tcp", 6)])
+        self.assertIn("ctga::chains::coupling<T>{T(-1.0), T(0.01)}", body_block(header, 8))
+        # the base body lumps the camera: 25 + 0.2 kg
+        self.assert_close(mass_properties(body_block(header, 2))[0], 25.2)
+        # the imu frame: yawed by pi/2
+        t, theta, u = motor(frame_block(header, 2))
+        self.assertEqual(t, [0.1, 0.0, 0.21])
+        self.assert_rotation(theta, u, rpy_matrix_here(0, 0, math.pi / 2))
+        # --strict: the camera is an error; --mimic independent: one more coordinate
+        rc, _, err = self.run_script(fixture("mobile_gripper.urdf"), "--strict")
+        self.assertEqual(rc, 1)
+        self.assertIn('link "camera_link"', err)
+        header, _ = self.fixture_header("mobile_gripper.urdf", "--mimic", "independent", warnings=1)
+        self.assertEqual(self.counts(header), (9, 11, 9))
+
+    def test_fixture_legged(self):
+        header, _ = self.fixture_header("legged.urdf", "--floating-base")
+        self.assertEqual(self.counts(header), (13, 26, 18))
+        self.assertEqual(names(header, "joint_names")[:4], ["base", "LF_HAA", "LF_HFE", "LF_KFE"])
+        self.assertEqual(tree_lines(header)[9], ("8", "revolute<ctga::chains::axis::minus_y>"))
+        self.assertEqual(frame_lines(header)[:11], [
+            ("base", 0), ("base_inertia", 0), ("imu_link", 0), ("face", 0), ("depth_camera", 0),
+            ("depth_camera_optical", 0), ("LF_HIP", 1), ("LF_THIGH", 2), ("LF_SHANK", 3), ("LF_shank_fixed", 3),
+            ("LF_FOOT", 3)])
+        # body 0 (no inertial of its own) lumps the trunk, the face and the camera
+        self.assert_close(mass_properties(body_block(header, 0))[0], 16.8 + 0.7 + 0.12)
+        self.assert_close(mass_properties(body_block(header, 3))[0], 0.33 + 0.14)
+        self.assertIn('// merged: "base_inertia", "imu_link", "face", "depth_camera", "depth_camera_optical"',
+                      body_block(header, 0))
+        # the foot: through the shank_fixed link (yawed by pi/2 on the left legs)
+        t, theta, u = motor(frame_block(header, 10))
+        self.assert_close(t, [0.1 + 0.08795, -0.02 + 0.01305, -0.33797])
+        self.assert_rotation(theta, u, rpy_matrix_here(0, 0, math.pi / 2))
+
+    def test_fixtures_from_before(self):
+        header, _ = self.fixture_header("arm7.urdf")
+        self.assertEqual(self.counts(header), (7, 9, 7))
+        self.assertEqual(frame_lines(header)[-1], ("tool", 6))
+        header, _ = self.fixture_header("quadruped.urdf", "--floating-base")
+        self.assertEqual(self.counts(header), (13, 17, 18))
+        self.assertEqual(names(header, "joint_names")[0], "trunk")
+        header, _ = self.fixture_header("quadruped.urdf", "--floating-base", "--keep-fixed")
+        self.assertEqual(self.counts(header), (17, 17, 18))
 
     def test_stdout(self):
         path = os.path.join(self.tmp.name, "r.urdf")
@@ -316,23 +907,6 @@ class Converter(unittest.TestCase):
         r = subprocess.run([sys.executable, SCRIPT, path, "--name", "r"], capture_output=True, text=True, check=False)
         self.assertEqual(r.returncode, 0, r.stderr)
         self.assertIn("namespace r {", r.stdout)
-
-
-def rpy_matrix_here(roll, pitch, yaw):
-    """URDF: R = Rz(yaw) Ry(pitch) Rx(roll), written out (not the script's code)."""
-    cr, sr, cp, sp, cy, sy = (math.cos(roll), math.sin(roll), math.cos(pitch), math.sin(pitch), math.cos(yaw),
-                              math.sin(yaw))
-    return [[cy * cp, cy * sp * sr - sy * cr, cy * sp * cr + sy * sr],
-            [sy * cp, sy * sp * sr + cy * cr, sy * sp * cr - cy * sr],
-            [-sp, cp * sr, cp * cr]]
-
-
-def rodrigues(ux, uy, uz, theta):
-    """Rot(u, theta), right hand: 1 + sin(theta) [u]x + (1 - cos(theta)) [u]x^2."""
-    s, c = math.sin(theta), math.cos(theta)
-    k = [[0, -uz, uy], [uz, 0, -ux], [-uy, ux, 0]]
-    k2 = [[sum(k[i][m] * k[m][j] for m in range(3)) for j in range(3)] for i in range(3)]
-    return [[(1.0 if i == j else 0.0) + s * k[i][j] + (1 - c) * k2[i][j] for j in range(3)] for i in range(3)]
 
 
 if __name__ == "__main__":

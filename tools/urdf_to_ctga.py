@@ -7,28 +7,85 @@ parameters (a ctga::chains::model), in one header.
 
 The header declares, in namespace NAME (or --namespace):
 
-    using tree = ctga::chains::tree<ctga::chains::link<parent, joint>, ...>;
+    using tree = ctga::chains::tree<ctga::chains::link<parent, joint>, ...,          // the bodies
+                                    ctga::chains::fixed_frame<"link", body>, ...>;   // every URDF link
     inline constexpr std::array<std::string_view, tree::size> body_names{...};   // URDF link names
     inline constexpr std::array<std::string_view, tree::size> joint_names{...};  // URDF joint names
     template <class T = double>
     constexpr ctga::checked<ctga::chains::model<tree, T>> make_model() noexcept;
 
 How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
-  * a URDF child link's frame is the joint frame moved by the joint, which is ctga's body frame;
-    the joint's <origin xyz rpy> is the body's placement in its parent link's frame at q = 0
-    (R = Rz(yaw) Ry(pitch) Rx(roll), emitted as a translation and an axis-angle rotation);
-  * revolute and continuous -> revolute_x/_y/_z when the normalised <axis> is exactly +x, +y or
-    +z, else revolute_about with the normalised axis; prismatic -> prismatic_x/_y/_z or
-    prismatic_along; fixed -> fixed; floating -> floating (q: the 8 coefficients of a motor);
-  * a link's <inertial>: mass, centre of mass = <origin xyz>, and the tensor about the centre of
-    mass rotated into the link frame, I = R_rpy I_inertial R_rpy^T;
-  * the root link (no joint's child) is the fixed world and its <inertial> is dropped; with
-    --floating-base it becomes body 0 on a floating joint (identity placement) and keeps it;
-  * bodies in depth-first order from the root, children in document order.
+  * Bodies. A body is a link on a moving joint (revolute, continuous, prismatic, floating, planar;
+    planar gives three bodies, below), plus the root link with --floating-base. Bodies are numbered
+    depth first over the links from the root, children in document order (a merged link's children
+    in its place); body_names[i] is body i's own URDF link and joint_names[i] the joint joining it
+    to its parent body (parent -1: the world).
+  * Frames. A URDF child link's frame is the joint frame moved by the joint, which is ctga's body
+    frame; the joint's <origin xyz rpy> is the body's placement in its parent link's frame at q = 0
+    (R = Rz(yaw) Ry(pitch) Rx(roll); emitted as a translation and an axis-angle rotation).
+  * Fixed joints are merged (the default). A link on a fixed joint is lumped into its nearest
+    moving ancestor's body; with a fixed base, links fixed (directly or through other fixed links)
+    to the root are lumped into the world. The placement of such a link in its body's frame is the
+    composition of the fixed joints' origins (composed exactly, through quaternions); the children
+    of a merged link are placed through it. The body's mass properties are the exact sum, in the
+    body frame: total mass m = sum m_k, centre of mass c = sum m_k c_k / m, and the inertia about c
+    by the parallel-axis theorem, I = sum R_k I_k R_k^T + m_k (|d_k|^2 1 - d_k d_k^T), d_k = c_k - c
+    (c_k, R_k: link k's centre of mass and axes in the body frame). A massless link adds nothing.
+    Inertia lumped into the world is dropped (the header lists those links). --keep-fixed instead
+    keeps every link on a fixed joint as its own body on a `fixed` joint (its own mass properties).
+  * Every URDF link is a named frame: after the bodies, the tree lists
+    fixed_frame<"link", body> for every link, depth first with the root first; body is the body the
+    link belongs to (-1: the world) and make_model sets m.frames[k] to the link's placement in that
+    body's frame (identity for a body's own link; the composed fixed origins for a merged link).
+  * Joints. revolute and continuous -> revolute_x/_y/_z when the normalised <axis> is exactly +x,
+    +y or +z, revolute<axis::minus_x/_y/_z> when it is exactly -x, -y or -z, else revolute_about
+    with the normalised axis (passed to make_link); prismatic likewise -> prismatic_x/_y/_z,
+    prismatic<axis::minus_...> or prismatic_along; fixed -> fixed (--keep-fixed only); floating ->
+    floating (q: the 8 coefficients of a motor; v: the body screw); the URDF default axis is 1 0 0.
+  * planar (axis = the plane normal n) -> three bodies in a chain: prismatic along u1, prismatic
+    along u2, revolute about n, (u1, u2, n) right-handed orthonormal. The first carries the joint's
+    origin as its placement, the other two identity placements. The first two are massless virtual
+    bodies named "<joint>_x" and "<joint>_y" (body and joint names; "_" appended while a name is
+    taken by a link or joint); the third is the child link, on joint "<joint>". Velocities (x, y,
+    theta). When n is a coordinate axis, u1 and u2 are too (n = +-e_k: u1 = e_(k+1), u2 = +-e_(k+2),
+    indices mod 3; n = +z: prismatic_x, prismatic_y, revolute_z); else u1 is the coordinate axis
+    least aligned with n, made orthogonal to n, and u2 = n x u1.
+  * <mimic joint="master" multiplier="m" offset="o"/> (defaults m = 1, o = 0) -> mimic<Joint,
+    MasterBody> with coupling<T>{m, o} passed to make_link: q = m q_master + o, no coordinate of
+    its own; MasterBody is the master joint's body (before or after the mimic's own body in the
+    depth-first order, as the tree has it). Errors (naming the joint): the master does not exist,
+    is not revolute, continuous or prismatic, or is itself a mimic; a mimic on a joint that is not
+    revolute, continuous or prismatic. --mimic independent instead makes mimic joints ordinary independent joints (the
+    <mimic> element is then ignored once its numbers parse).
+  * --floating-base: the root link becomes body 0 on a floating joint (identity placement) named
+    after the root link (joint_names[0]; "_joint" appended if a URDF joint has that name). Without
+    it the root link is the fixed world.
+  * Mass properties. A link's <inertial>: mass, centre of mass = <origin xyz>, and the tensor about
+    the centre of mass rotated into the link frame, I = R_rpy I_inertial R_rpy^T. A link without
+    <inertial> is massless, and so is a link of mass 0 (its tensor, if not zero, is ignored, with
+    a warning). A body whose total mass is 0 is massless:
+    make_mass_properties(0, {0, 0, 0}, zeros, mass_check::as_given). A moving joint whose whole
+    subtree (its body and every descendant) has no mass is an error naming the joint (the mass
+    matrix would be singular and ABA would divide by zero; mimic joints and a planar joint's
+    virtual bodies count as moving, and name their URDF joint); make_model also ends with
+    ctga::chains::massless_subtree, the same check on the C++ side.
+  * Inertia policy. Errors: malformed or non-finite numbers, negative mass, malformed XML.
+    Warnings on stderr (physically questionable but common data), per URDF link whose inertia
+    enters a body and per merged body (for the lumped tensor): principal moments that are not all
+    positive (the tensor is not positive definite), principal moments that violate the triangle
+    inequality I_i <= I_j + I_k, a mass-0 link with a nonzero tensor (inertia lumped into the world
+    is dropped, so not checked). The header repeats the warnings as comments. Tolerance: with
+    tol = 64 eps (|Ixx| + |Iyy| + |Izz|) (eps = 2^-52, the tolerance of ctga's own check), a moment
+    >= -tol and a triangle excess <= tol are rounding, not warned (e.g. -4e-22 for a thin rod's
+    zero moment). Every body's mass properties are built with mass_check::as_given (the tool
+    has checked finiteness and m >= 0), so such data loads. --strict turns every warning into an
+    error and builds the bodies that have mass with the physical check (no as_given), so it also
+    refuses a body whose lumped tensor is singular (a zero or rounding-level moment) as ctga's
+    physical check would; massless bodies still use as_given (the physical check needs m > 0).
 Joint limits, dynamics (damping, friction), visuals, collisions, transmissions and Gazebo
-extensions are ignored. Anything that cannot be represented exactly (planar joints, <mimic>, a
-graph that is not a tree, a body without mass) is an error: exit status 1 and a message naming
-the element on stderr; no header is written.
+extensions are ignored. Anything that cannot be represented (a joint type outside the URDF spec, a
+graph that is not a tree, a massless moving subtree) is an error: exit status 1 and a message
+naming the element on stderr; no header is written.
 
 Standard library only.
 """
@@ -41,7 +98,9 @@ import sys
 import xml.etree.ElementTree as ET
 
 PROG = "urdf_to_ctga"
-SUPPORTED_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating")
+SUPPORTED_TYPES = ("revolute", "continuous", "prismatic", "fixed", "floating", "planar")
+ONE_DOF = ("revolute", "continuous", "prismatic")
+EPS = sys.float_info.epsilon
 
 
 class UrdfError(Exception):
@@ -78,7 +137,7 @@ def parse_vector(text, where, default=None):
     return [parse_number(p, where) for p in parts]
 
 
-# ---- rotations --------------------------------------------------------------------------------
+# ---- rotations and placements -------------------------------------------------------------------
 
 
 def matmul(a, b):
@@ -87,6 +146,29 @@ def matmul(a, b):
 
 def transpose(a):
     return [[a[j][i] for j in range(3)] for i in range(3)]
+
+
+def matvec(a, v):
+    return [a[i][0] * v[0] + a[i][1] * v[1] + a[i][2] * v[2] for i in range(3)]
+
+
+def cross(a, b):
+    return [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]]
+
+
+def dot(a, b):
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+
+
+def normalised(v):
+    n = math.sqrt(dot(v, v))
+    return [c / n for c in v]
+
+
+def rotate_tensor(r, t):
+    """R T R^T, exactly symmetric (the upper triangle mirrored)."""
+    rt = matmul(r, matmul(t, transpose(r)))
+    return [[rt[min(a, b)][max(a, b)] for b in range(3)] for a in range(3)]
 
 
 def rpy_matrix(rpy):
@@ -99,24 +181,80 @@ def rpy_matrix(rpy):
     return matmul(rz, matmul(ry, rx))
 
 
-def rpy_axis_angle(rpy):
-    """(u, theta) with Rot(u, theta) = Rz(yaw) Ry(pitch) Rx(roll), theta in [0, pi], u a unit
-    vector (right hand). Through the quaternion q = qz(yaw) qy(pitch) qx(roll), whose half-angle
-    products are exact to rounding at every angle (no acos of a trace)."""
-    if rpy == [0.0, 0.0, 0.0]:
-        return [0.0, 0.0, 1.0], 0.0
+IDENTITY_Q = (1.0, 0.0, 0.0, 0.0)
+
+
+def rpy_quaternion(rpy):
+    """q = qz(yaw) qy(pitch) qx(roll) (w, x, y, z), whose half-angle products are exact to rounding
+    at every angle (no acos of a trace); exactly the identity for rpy 0 0 0."""
+    if list(rpy) == [0.0, 0.0, 0.0]:
+        return IDENTITY_Q
     hr, hp, hy = (a / 2 for a in rpy)
     cr, sr, cp, sp, cy, sy = math.cos(hr), math.sin(hr), math.cos(hp), math.sin(hp), math.cos(hy), math.sin(hy)
-    w = cr * cp * cy + sr * sp * sy
-    x = sr * cp * cy - cr * sp * sy
-    y = cr * sp * cy + sr * cp * sy
-    z = cr * cp * sy - sr * sp * cy
+    return (cr * cp * cy + sr * sp * sy, sr * cp * cy - cr * sp * sy, cr * sp * cy + sr * cp * sy,
+            cr * cp * sy - sr * sp * cy)
+
+
+def quat_mul(a, b):
+    aw, ax, ay, az = a
+    bw, bx, by, bz = b
+    return (aw * bw - ax * bx - ay * by - az * bz, aw * bx + ax * bw + ay * bz - az * by,
+            aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw)
+
+
+def quat_matrix(q):
+    """The rotation matrix of a unit quaternion (normalised here against accumulated rounding)."""
+    if q == IDENTITY_Q:
+        return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    n = math.sqrt(sum(c * c for c in q))
+    w, x, y, z = (c / n for c in q)
+    return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]
+
+
+def quat_axis_angle(q):
+    """(u, theta) with Rot(u, theta) = q's rotation, theta in [0, pi], u a unit vector (right hand)."""
+    w, x, y, z = q
     if w < 0:
         w, x, y, z = -w, -x, -y, -z
     s = math.sqrt(x * x + y * y + z * z)
     if s == 0.0:
         return [0.0, 0.0, 1.0], 0.0
     return [x / s, y / s, z / s], 2.0 * math.atan2(s, w)
+
+
+class Pose:
+    """A placement: rotation q (unit quaternion, w x y z) then translation p, X(v) = R(q) v + p."""
+
+    def __init__(self, q=IDENTITY_Q, p=(0.0, 0.0, 0.0)):
+        self.q, self.p = tuple(q), [float(c) for c in p]
+
+    @staticmethod
+    def origin(xyz, rpy):
+        return Pose(rpy_quaternion(rpy), xyz)
+
+    def is_identity(self):
+        return self.q == IDENTITY_Q and self.p == [0.0, 0.0, 0.0]
+
+    def then(self, child):
+        """self * child: child's placement expressed through self (exact when either is the identity)."""
+        if self.is_identity():
+            return child
+        if child.is_identity():
+            return self
+        if self.q == IDENTITY_Q:
+            p = [a + b for a, b in zip(self.p, child.p)]
+        else:
+            p = [a + b for a, b in zip(self.p, matvec(quat_matrix(self.q), child.p))]
+        q = child.q if self.q == IDENTITY_Q else self.q if child.q == IDENTITY_Q else quat_mul(self.q, child.q)
+        return Pose(q, p)
+
+    def matrix(self):
+        return quat_matrix(self.q)
+
+
+# ---- inertia ------------------------------------------------------------------------------------
 
 
 def symmetric_eigenvalues(a):
@@ -137,32 +275,104 @@ def symmetric_eigenvalues(a):
     return sorted([e1, 3 * q - e1 - e3, e3])
 
 
+def tolerance(tensor):
+    """Rounding in a tensor's numbers: 64 eps (|Ixx| + |Iyy| + |Izz|), the tolerance of ctga's own
+    check (include/ctga/mechanics/mass_properties.hpp)."""
+    return 64 * EPS * (abs(tensor[0][0]) + abs(tensor[1][1]) + abs(tensor[2][2]))
+
+
+def fmt_moments(ev):
+    return "[" + ", ".join(f"{x:.6g}" for x in ev) + "]"
+
+
+def questionable(tensor):
+    """Why a tensor is physically questionable beyond rounding (a phrase for a message), or None."""
+    ev = symmetric_eigenvalues(tensor)
+    tol = tolerance(tensor)
+    if ev[0] < -tol:
+        return f"principal moments {fmt_moments(ev)} are not all positive (the tensor is not positive definite)"
+    if ev[2] > ev[0] + ev[1] + tol:
+        return f"principal moments {fmt_moments(ev)} violate the triangle inequality I_i <= I_j + I_k"
+    return None
+
+
+def physically_refused(tensor):
+    """Why ctga's physical check (make_mass_properties without as_given, m > 0) refuses a tensor,
+    or None: the same tests in the same order (Sylvester's leading minors > 0, then the triangle
+    inequalities through the second moment with the same tolerances)."""
+    I = tensor
+    tol = tolerance(I)
+    m1 = I[0][0]
+    m2 = I[0][0] * I[1][1] - I[0][1] * I[0][1]
+    m3 = (I[0][0] * (I[1][1] * I[2][2] - I[1][2] * I[1][2]) - I[0][1] * (I[0][1] * I[2][2] - I[1][2] * I[0][2])
+          + I[0][2] * (I[0][1] * I[1][2] - I[1][1] * I[0][2]))
+    ev = fmt_moments(symmetric_eigenvalues(I))
+    if not (m1 > 0 and m2 > 0 and m3 > 0):
+        return f"principal moments {ev}: the tensor is not positive definite"
+    half = (I[0][0] + I[1][1] + I[2][2]) / 2
+    S = [[(half if i == j else 0.0) - I[i][j] for j in range(3)] for i in range(3)]
+    t2 = tol * half
+    t3 = t2 * half
+    bad = any(S[i][i] < -tol for i in range(3))
+    bad = bad or any(S[i][i] * S[j][j] - S[i][j] * S[i][j] < -t2 for i in range(3) for j in range(i + 1, 3))
+    det_s = (S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[1][2]) - S[0][1] * (S[0][1] * S[2][2] - S[1][2] * S[0][2])
+             + S[0][2] * (S[0][1] * S[1][2] - S[1][1] * S[0][2]))
+    if bad or det_s < -t3:
+        return f"principal moments {ev} violate the triangle inequality I_i <= I_j + I_k"
+    return None
+
+
+def lump(parts):
+    """Mass properties of rigidly joined parts [(m, c, I about c)], all in one frame: (m, c, I about
+    c). Massless parts add nothing; a single part is returned unchanged (no rounding)."""
+    parts = [p for p in parts if p[0] > 0]
+    if not parts:
+        return 0.0, [0.0, 0.0, 0.0], [[0.0] * 3 for _ in range(3)]
+    if len(parts) == 1:
+        return parts[0]
+    m = sum(p[0] for p in parts)
+    c = [sum(p[0] * p[1][i] for p in parts) / m for i in range(3)]
+    I = [[0.0] * 3 for _ in range(3)]
+    for mk, ck, Ik in parts:
+        d = [ck[i] - c[i] for i in range(3)]
+        d2 = dot(d, d)
+        for a in range(3):
+            for b in range(a, 3):
+                I[a][b] += Ik[a][b] + mk * ((d2 if a == b else 0.0) - d[a] * d[b])
+    return m, c, [[I[min(a, b)][max(a, b)] for b in range(3)] for a in range(3)]
+
+
 # ---- the URDF -----------------------------------------------------------------------------------
 
 
 class Inertial:
     def __init__(self, mass, com, tensor):
-        self.mass = mass      # kg
+        self.mass = mass      # kg, >= 0
         self.com = com        # centre of mass, link frame
         self.tensor = tensor  # about the centre of mass, link axes (symmetric)
 
 
 class Link:
-    def __init__(self, name, inertial, inertial_error):
+    def __init__(self, name, inertial):
         self.name = name
-        self.inertial = inertial              # Inertial or None
-        self.inertial_error = inertial_error  # why a present <inertial> is unusable, or None
+        self.inertial = inertial  # Inertial or None (massless)
+
+
+class Mimic:
+    def __init__(self, master, multiplier, offset):
+        self.master, self.multiplier, self.offset = master, multiplier, offset
 
 
 class Joint:
-    def __init__(self, name, kind, parent, child, xyz, rpy, axis):
+    def __init__(self, name, kind, parent, child, xyz, rpy, axis, mimic):
         self.name = name
         self.kind = kind      # one of SUPPORTED_TYPES
         self.parent = parent  # link names
         self.child = child
         self.xyz = xyz
         self.rpy = rpy
-        self.axis = axis      # unit, joint frame (revolute, continuous, prismatic), else None
+        self.axis = axis      # unit, joint frame (revolute, continuous, prismatic; planar: the normal), else None
+        self.mimic = mimic    # Mimic or None
 
 
 def _origin(elem, where):
@@ -174,12 +384,11 @@ def _origin(elem, where):
 
 
 def _parse_inertial(link_elem, where):
-    """(Inertial or None, error or None). The numbers are parsed (a malformed one is an error at
-    once); whether a missing or massless inertial matters depends on whether the link becomes a
-    body, so those are returned as errors for later."""
+    """The link's Inertial, or None without <inertial> (massless). The numbers are checked here
+    (malformed, non-finite, negative mass: errors); the physics is checked per body later."""
     elems = link_elem.findall("inertial")
     if not elems:
-        return None, f"{where}: no <inertial> (a link that becomes a body needs its mass)"
+        return None
     if len(elems) > 1:
         raise UrdfError(f"{where}: more than one <inertial>")
     inertial = elems[0]
@@ -188,28 +397,29 @@ def _parse_inertial(link_elem, where):
     if mass_elem is None:
         raise UrdfError(f"{where}: <inertial> has no <mass>")
     mass = parse_number(mass_elem.get("value"), f"{where}: <mass value>")
+    if mass < 0:
+        raise UrdfError(f"{where}: mass {mass!r} is negative")
+    mass = abs(mass)  # -0.0 -> 0.0
     inertia_elem = inertial.find("inertia")
     if inertia_elem is None:
         raise UrdfError(f"{where}: <inertial> has no <inertia>")
     i = {k: parse_number(inertia_elem.get(k), f"{where}: <inertia {k}>")
          for k in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz")}
     tensor = [[i["ixx"], i["ixy"], i["ixz"]], [i["ixy"], i["iyy"], i["iyz"]], [i["ixz"], i["iyz"], i["izz"]]]
-    error = None
-    if not mass > 0:
-        error = f"{where}: mass {mass!r} is not positive"
-    else:
-        ev = symmetric_eigenvalues(tensor)
-        tol = 64 * sys.float_info.epsilon * (abs(tensor[0][0]) + abs(tensor[1][1]) + abs(tensor[2][2]))
-        if not ev[0] > 0:
-            error = f"{where}: the inertia tensor is not positive definite (principal moments {ev})"
-        elif ev[2] > ev[0] + ev[1] + tol:
-            error = (f"{where}: the inertia tensor's principal moments {ev} violate the triangle inequality "
-                     "I_i <= I_j + I_k")
     if rpy != [0.0, 0.0, 0.0]:
-        r = rpy_matrix(rpy)
-        rotated = matmul(r, matmul(tensor, transpose(r)))
-        tensor = [[rotated[min(a, b)][max(a, b)] for b in range(3)] for a in range(3)]  # exactly symmetric
-    return Inertial(mass, xyz, tensor), error
+        tensor = rotate_tensor(rpy_matrix(rpy), tensor)
+    return Inertial(mass, xyz, tensor)
+
+
+def _unit_axis(je, where):
+    ae = je.find("axis")
+    a = parse_vector(ae.get("xyz") if ae is not None else None, f"{where}: <axis xyz>", (1.0, 0.0, 0.0))
+    n = math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
+    if n == 0.0:
+        raise UrdfError(f"{where}: the axis is zero")
+    if a.count(0.0) == 2:  # a coordinate axis: exactly, not to rounding
+        return [c / abs(c) if c != 0.0 else 0.0 for c in a]
+    return [c / n for c in a]
 
 
 def parse_urdf(path):
@@ -232,8 +442,7 @@ def parse_urdf(path):
         if name in link_names:
             raise UrdfError(f"{where} is defined twice")
         link_names.add(name)
-        inertial, error = _parse_inertial(le, where)
-        links.append(Link(name, inertial, error))
+        links.append(Link(name, _parse_inertial(le, where)))
 
     joints, joint_names = [], set()
     for je in root.findall("joint"):
@@ -249,8 +458,6 @@ def parse_urdf(path):
             raise UrdfError(f"{where}: no type (supported: {', '.join(SUPPORTED_TYPES)})")
         if kind not in SUPPORTED_TYPES:
             raise UrdfError(f'{where}: type "{kind}" is not supported ({", ".join(SUPPORTED_TYPES)})')
-        if je.find("mimic") is not None:
-            raise UrdfError(f"{where}: <mimic> is not supported (ctga's joints are independent coordinates)")
         ends = {}
         for role in ("parent", "child"):
             e = je.find(role)
@@ -262,47 +469,100 @@ def parse_urdf(path):
         if ends["parent"] == ends["child"]:
             raise UrdfError(f'{where}: link "{ends["child"]}" is its own parent (not a tree)')
         xyz, rpy = _origin(je, where)
-        axis = None
-        if kind in ("revolute", "continuous", "prismatic"):
-            ae = je.find("axis")
-            a = parse_vector(ae.get("xyz") if ae is not None else None, f"{where}: <axis xyz>", (1.0, 0.0, 0.0))
-            n = math.sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2])
-            if n == 0.0:
-                raise UrdfError(f"{where}: the axis is zero")
-            axis = [c / n for c in a]
-            if a.count(0.0) == 2:  # a coordinate axis: exactly, not to rounding
-                axis = [c / abs(c) if c != 0.0 else 0.0 for c in a]
-        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis))
+        axis = _unit_axis(je, where) if kind in ONE_DOF or kind == "planar" else None
+        mimic = None
+        me = je.findall("mimic")
+        if len(me) > 1:
+            raise UrdfError(f"{where}: more than one <mimic>")
+        if me:
+            master = me[0].get("joint")
+            if not master:
+                raise UrdfError(f'{where}: <mimic> without joint="..."')
+            mult = me[0].get("multiplier")
+            off = me[0].get("offset")
+            mimic = Mimic(master, 1.0 if mult is None else parse_number(mult, f"{where}: <mimic multiplier>"),
+                          0.0 if off is None else parse_number(off, f"{where}: <mimic offset>"))
+        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis, mimic))
     return root.get("name", ""), links, joints
 
 
 # ---- the tree -----------------------------------------------------------------------------------
 
+AXIS_TYPES = {(1.0, 0.0, 0.0): "x", (0.0, 1.0, 0.0): "y", (0.0, 0.0, 1.0): "z"}
+MINUS_AXIS_TYPES = {(-1.0, 0.0, 0.0): "x", (0.0, -1.0, 0.0): "y", (0.0, 0.0, -1.0): "z"}
+
+
+def one_dof_type(prefix, axis):
+    """(C++ type, whether make_link takes the axis) of a revolute or prismatic joint about/along axis."""
+    a = tuple(0.0 if c == 0.0 else c for c in axis)  # -0.0 -> 0.0
+    if a in AXIS_TYPES:
+        return f"ctga::chains::{prefix}_{AXIS_TYPES[a]}", False
+    if a in MINUS_AXIS_TYPES:
+        return f"ctga::chains::{prefix}<ctga::chains::axis::minus_{MINUS_AXIS_TYPES[a]}>", False
+    return ("ctga::chains::prismatic_along" if prefix == "prismatic" else "ctga::chains::revolute_about"), True
+
+
+def plane_axes(n):
+    """(u1, u2) with (u1, u2, n) a right-handed orthonormal basis; coordinate axes when n is one
+    (n = +-e_k: u1 = e_(k+1), u2 = +-e_(k+2)), else u1 from the coordinate axis least aligned with n."""
+    for k in range(3):
+        e = [0.0, 0.0, 0.0]
+        e[k] = 1.0
+        for s in (1.0, -1.0):
+            if n == [s * c if c else 0.0 for c in e]:
+                u1 = [0.0, 0.0, 0.0]
+                u1[(k + 1) % 3] = 1.0
+                u2 = [0.0, 0.0, 0.0]
+                u2[(k + 2) % 3] = s
+                return u1, u2
+    k = min(range(3), key=lambda i: abs(n[i]))
+    a = [1.0 if i == k else 0.0 for i in range(3)]
+    an = dot(a, n)
+    u1 = normalised([a[i] - an * n[i] for i in range(3)])
+    u2 = normalised(cross(n, u1))
+    return u1, u2
+
 
 class Body:
-    def __init__(self, index, parent, link, joint_name, kind, axis, xyz, rpy, cpp_joint):
-        self.index, self.parent, self.link = index, parent, link
-        self.joint_name, self.kind, self.axis, self.xyz, self.rpy = joint_name, kind, axis, xyz, rpy
-        self.cpp_joint = cpp_joint
+    def __init__(self, index, parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, axis=None,
+                 takes_axis=False, link=None):
+        self.index, self.parent = index, parent
+        self.name = name                # body_names entry
+        self.joint_name = joint_name    # joint_names entry
+        self.urdf_joint = urdf_joint    # the URDF joint it comes from (None: the floating base)
+        self.kind = kind                # a description for comments
+        self.placement = placement      # Pose in the parent body's frame (or the world)
+        self.cpp_joint = cpp_joint      # C++ type, fully qualified
+        self.axis = axis                # the run-time axis, or the axis for comments, or None
+        self.takes_axis = takes_axis    # make_link takes the axis
+        self.link = link                # the body's own URDF link (None: a planar joint's virtual body)
+        self.coupling = None            # (multiplier, offset) of a mimic joint
+        self.parts = []                 # [(Link, Pose in this body's frame)]: its own link first, then merged ones
+        self.mass, self.com, self.tensor = 0.0, [0.0] * 3, [[0.0] * 3 for _ in range(3)]
+        self.dofs = 0
 
 
-def cpp_joint_of(joint):
-    if joint.kind == "fixed":
-        return "fixed"
-    if joint.kind == "floating":
-        return "floating"
-    prefix = "prismatic" if joint.kind == "prismatic" else "revolute"
-    for i, letter in enumerate("xyz"):
-        if joint.axis == [1.0 if k == i else 0.0 for k in range(3)]:
-            return f"{prefix}_{letter}"
-    return "prismatic_along" if joint.kind == "prismatic" else "revolute_about"
+class Frame:
+    def __init__(self, name, body, pose, via):
+        self.name, self.body, self.pose = name, body, pose
+        self.via = via  # the fixed joints composed into the pose (names), outermost first
 
 
-def build_tree(links, joints, floating_base):
-    """(root Link, [Body] in depth-first order)."""
+class Model:
+    def __init__(self):
+        self.root = None
+        self.bodies = []
+        self.frames = []
+        self.world_links = []  # links lumped into the world (their inertia dropped), root first
+        self.warnings = []
+
+
+def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupled", strict=False):
+    """The Model: bodies and frames in depth-first order, mass properties, warnings."""
     if not links:
         raise UrdfError("the URDF has no <link>")
     by_name = {l.name: l for l in links}
+    joint_by_name = {j.name: j for j in joints}
     parent_joint = {}
     for j in joints:
         if j.child in parent_joint:
@@ -320,36 +580,176 @@ def build_tree(links, joints, floating_base):
     for j in joints:
         children[j.parent].append(j)
 
-    bodies = []
+    model = Model()
+    model.root = root
+    bodies, frames = model.bodies, model.frames
+    taken = set(by_name) | set(joint_by_name)  # names a virtual body or the floating base must not take
 
-    def needs_inertial(link):
-        if link.inertial_error is not None:
-            raise UrdfError(link.inertial_error)
+    def fresh(name, suffix):
+        while name in taken:
+            name += suffix
+        taken.add(name)
+        return name
+
+    def new_body(parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, **kw):
+        b = Body(len(bodies), parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, **kw)
+        bodies.append(b)
+        return b
+
+    stack = []
+
+    def visit(link, body, pose, via):
+        frames.append(Frame(link.name, body, pose, via))
+        if body >= 0:
+            bodies[body].parts.append((link, pose))
+        else:
+            model.world_links.append(link)
+        stack.extend((j, body, pose, via) for j in reversed(children[link.name]))
 
     if floating_base:
-        needs_inertial(root)
-        used = {j.name for j in joints}
-        name = "floating_base"
-        while name in used:
-            name += "_"
-        bodies.append(Body(0, -1, root, name, "floating", None, [0.0] * 3, [0.0] * 3, "floating"))
+        name = root.name
+        while name in joint_by_name or (name != root.name and name in taken):
+            name += "_joint"
+        taken.add(name)
+        b = new_body(-1, root.name, name, None, "floating base", Pose(), "ctga::chains::floating", link=root)
+        b.dofs = 6
+        visit(root, 0, Pose(), [])
+    else:
+        visit(root, -1, Pose(), [])
     # depth first, children in document order (an explicit stack: no recursion limit)
-    stack = [(j, 0 if floating_base else -1) for j in reversed(children[root.name])]
     while stack:
-        j, parent = stack.pop()
+        j, parent, ppose, pvia = stack.pop()
         link = by_name[j.child]
-        needs_inertial(link)
-        body = Body(len(bodies), parent, link, j.name, j.kind, j.axis, j.xyz, j.rpy, cpp_joint_of(j))
-        bodies.append(body)
-        stack.extend((c, body.index) for c in reversed(children[link.name]))
-    unreachable = [l.name for l in links if l is not root and all(b.link is not l for b in bodies)]
+        placement = ppose.then(Pose.origin(j.xyz, j.rpy))
+        if j.kind == "fixed" and not keep_fixed:
+            visit(link, parent, placement, pvia + [j.name])
+            continue
+        if j.kind == "planar":
+            u1, u2 = plane_axes(j.axis)
+            cpp, takes = one_dof_type("prismatic", u1)
+            bx = new_body(parent, None, None, j, "planar, translation along u1", placement, cpp, axis=u1,
+                          takes_axis=takes)
+            bx.name = bx.joint_name = fresh(j.name + "_x", "_")
+            cpp, takes = one_dof_type("prismatic", u2)
+            by = new_body(bx.index, None, None, j, "planar, translation along u2", Pose(), cpp, axis=u2,
+                          takes_axis=takes)
+            by.name = by.joint_name = fresh(j.name + "_y", "_")
+            bx.dofs = by.dofs = 1
+            cpp, takes = one_dof_type("revolute", j.axis)
+            b = new_body(by.index, link.name, j.name, j, "planar, rotation about the normal", Pose(), cpp,
+                         axis=j.axis, takes_axis=takes, link=link)
+            b.dofs = 1
+        elif j.kind in ONE_DOF:
+            cpp, takes = one_dof_type("prismatic" if j.kind == "prismatic" else "revolute", j.axis)
+            b = new_body(parent, link.name, j.name, j, j.kind, placement, cpp, axis=j.axis, takes_axis=takes,
+                         link=link)
+            b.dofs = 1
+        elif j.kind == "floating":
+            b = new_body(parent, link.name, j.name, j, "floating", placement, "ctga::chains::floating", link=link)
+            b.dofs = 6
+        else:  # fixed, --keep-fixed
+            b = new_body(parent, link.name, j.name, j, "fixed", placement, "ctga::chains::fixed", link=link)
+        visit(link, b.index, Pose(), [])
+
+    reached = {f.name for f in frames}
+    unreachable = [l.name for l in links if l.name not in reached]
     if unreachable:
         raise UrdfError(f'link "{unreachable[0]}" is not connected to the root link "{root.name}" '
                         "(a loop: the URDF is not a tree)")
     if not bodies:
         raise UrdfError(f'the robot has no bodies: the root link "{root.name}" is the world and no joint moves '
                         "anything (use --floating-base to make it a free body)")
-    return root, bodies
+
+    _couple_mimics(bodies, joints, joint_by_name, mimic_mode)
+    _mass_properties(model, strict)
+    return model
+
+
+def _couple_mimics(bodies, joints, joint_by_name, mimic_mode):
+    if mimic_mode != "coupled":
+        return
+    body_of_joint = {b.urdf_joint.name: b for b in bodies if b.urdf_joint is not None and b.link is not None}
+    for j in joints:
+        if j.mimic is None:
+            continue
+        where = f'joint "{j.name}"'
+        if j.kind not in ONE_DOF:
+            raise UrdfError(f'{where}: <mimic> on a {j.kind} joint (only revolute, continuous and prismatic joints '
+                            "can mimic another; --mimic independent ignores <mimic>)")
+        master = joint_by_name.get(j.mimic.master)
+        if master is None:
+            raise UrdfError(f'{where}: <mimic joint="{j.mimic.master}">: no such joint')
+        if master.kind not in ONE_DOF:
+            raise UrdfError(f'{where}: <mimic joint="{master.name}">: the master is a {master.kind} joint (it must '
+                            "be revolute, continuous or prismatic)")
+        if master.mimic is not None:
+            raise UrdfError(f'{where}: <mimic joint="{master.name}">: the master itself mimics '
+                            f'"{master.mimic.master}" (a mimic must follow an independent joint)')
+    for b in bodies:
+        j = b.urdf_joint
+        if j is None or j.mimic is None or b.link is None:
+            continue
+        master = body_of_joint[j.mimic.master]
+        b.cpp_joint = f"ctga::chains::mimic<{b.cpp_joint}, {master.index}>"
+        b.coupling = (j.mimic.multiplier, j.mimic.offset)
+        b.dofs = 0
+
+
+def _mass_properties(model, strict):
+    bodies = model.bodies
+
+    def complain(message):
+        if strict:
+            raise UrdfError(message + " (--strict)")
+        model.warnings.append(message)
+
+    # per URDF link whose inertia enters a body
+    for b in bodies:
+        for link, _ in b.parts:
+            if link.inertial is None:
+                continue
+            t = link.inertial.tensor
+            if link.inertial.mass == 0:
+                if any(x != 0.0 for row in t for x in row):
+                    complain(f'link "{link.name}": mass 0 with a nonzero inertia tensor (taken as massless)')
+                continue
+            why = questionable(t)
+            if why:
+                complain(f'link "{link.name}": {why}')
+    # per body: the lumped mass properties, and its own checks
+    for b in bodies:
+        parts = []
+        for link, pose in b.parts:
+            if link.inertial is None or link.inertial.mass == 0:
+                continue
+            i = link.inertial
+            if pose.is_identity():
+                parts.append((i.mass, list(i.com), i.tensor))
+            else:
+                r = pose.matrix()
+                c = [a + d for a, d in zip(pose.p, matvec(r, i.com))]
+                parts.append((i.mass, c, rotate_tensor(r, i.tensor)))
+        b.mass, b.com, b.tensor = lump(parts)
+        what = f'body {b.index} "{b.name}"'
+        if len(parts) > 1:
+            why = questionable(b.tensor)
+            if why:
+                merged = ", ".join(f'"{l.name}"' for l, _ in b.parts[1:])
+                complain(f"{what} (link \"{b.name}\" with the merged links {merged}): lumped {why}")
+        if strict and b.mass > 0:
+            why = physically_refused(b.tensor)
+            if why:
+                raise UrdfError(f"{what}: {why}, which ctga's physical check refuses (--strict)")
+    # a moving joint with no mass anywhere below it
+    subtree = [b.mass for b in bodies]
+    for b in reversed(bodies):
+        if b.parent >= 0:
+            subtree[b.parent] += subtree[b.index]
+    for b in bodies:
+        if b.cpp_joint != "ctga::chains::fixed" and not subtree[b.index] > 0:
+            name = b.urdf_joint.name if b.urdf_joint is not None else b.joint_name
+            raise UrdfError(f'joint "{name}": no mass in its subtree: the mass matrix would be singular and ABA '
+                            "would divide by zero")
 
 
 # ---- C++ ----------------------------------------------------------------------------------------
@@ -384,6 +784,16 @@ def cpp_string(s):
     return '"' + "".join(out) + '"'
 
 
+def comment_text(s):
+    """s for a // comment: printable ASCII as is, a backslash doubled (never a line continuation),
+    other bytes as octal escapes (never a line break)."""
+    out = []
+    for byte in s.encode("utf-8"):
+        c = chr(byte)
+        out.append("\\\\" if c == "\\" else c if 0x20 <= byte < 0x7F else f"\\{byte:03o}")
+    return "".join(out)
+
+
 def num(x):
     """T(x), x with repr() precision (the shortest decimal that reads back as the same double)."""
     return f"T({float(x)!r})"
@@ -393,24 +803,63 @@ def vec(v):
     return ", ".join(num(x) for x in v)
 
 
-def generate(urdf_path, robot_name, root, bodies, name, namespace, floating_base, gravity):
+def words(v):
+    return " ".join(repr(float(x)) for x in v)
+
+
+def motor_lines(pose, indent):
+    """The placement motor: ctga::rigid_motion(translator, rotor), as two lines."""
+    u, theta = quat_axis_angle(pose.q)
+    return [f"{indent}ctga::rigid_motion(ctga::make_translator({vec(pose.p)}),",
+            f"{indent}                   ctga::make_rotor({num(theta)}, {vec(u)}))"]
+
+
+def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravity, keep_fixed=False,
+             mimic_mode="coupled", strict=False):
+    root, bodies, frames = model.root, model.bodies, model.frames
     source = os.path.basename(urdf_path)
+    dofs = sum(b.dofs for b in bodies)
     L = []
     L.append(f"// Generated by tools/urdf_to_ctga.py from {cpp_string(source)[1:-1]}; do not edit.")
     opts = f"--name {name}" + (f" --namespace {namespace}" if namespace != name else "")
     opts += " --floating-base" if floating_base else ""
     opts += "" if gravity == [0.0, 0.0, -9.81] else " --gravity " + " ".join(repr(g) for g in gravity)
-    L.append(f"// Robot {cpp_string(robot_name)}, {len(bodies)} bodies; options: {opts}")
+    opts += " --keep-fixed" if keep_fixed else ""
+    opts += " --mimic independent" if mimic_mode != "coupled" else ""
+    opts += " --strict" if strict else ""
+    L.append(f"// Robot {cpp_string(robot_name)}: {len(bodies)} bodies, {len(frames)} frames, {dofs} degrees of "
+             f"freedom; options: {opts}")
     L.append("//")
     if floating_base:
         L.append(f"// The root link {cpp_string(root.name)} is body 0 on a floating joint named "
                  f"{cpp_string(bodies[0].joint_name)} (identity")
         L.append("// placement; q: the 8 coefficients of its motor in the world, ctga::motor's order).")
     else:
-        dropped = ("it has no <inertial>" if root.inertial is None
-                   else f"its <inertial> (mass {root.inertial.mass!r}) is dropped")
-        L.append(f"// The root link {cpp_string(root.name)} is the fixed world (parent -1); {dropped}.")
+        dropped = [l for l in model.world_links if l.inertial is not None]
+        L.append(f"// The root link {cpp_string(root.name)} is the fixed world (parent -1).")
+        if dropped:
+            L.append("// Links lumped into the world, their inertia dropped: " +
+                     ", ".join(f"{cpp_string(l.name)} (mass {l.inertial.mass!r})" for l in dropped) + ".")
+        massless = [l for l in model.world_links if l.inertial is None]
+        if massless:
+            L.append("// Links in the world without <inertial>: " +
+                     ", ".join(cpp_string(l.name) for l in massless) + ".")
+    if keep_fixed:
+        L.append("// --keep-fixed: every link on a fixed joint is its own body on a fixed joint.")
+    else:
+        L.append("// Links on fixed joints are merged into their nearest moving ancestor's body (mass, centre of")
+        L.append("// mass and inertia summed exactly in the body frame); every link is a frame (fixed_frame).")
+    mimics = [b for b in bodies if b.urdf_joint is not None and b.urdf_joint.mimic is not None]
+    if mimics and mimic_mode != "coupled":
+        L.append("// --mimic independent: the <mimic> joints " + ", ".join(cpp_string(b.joint_name) for b in mimics)
+                 + " are independent coordinates.")
     L.append("// Body frame = the URDF child link's frame; placement = the joint's <origin> (at q = 0).")
+    if strict:
+        L.append("// --strict: bodies with mass use ctga's physical check (no questionable inertia was found).")
+    else:
+        L.append("// Mass properties are built with ctga::mass_check::as_given (finite, m >= 0, checked here).")
+    for w in model.warnings:
+        L.append(f"// Warning: {comment_text(w)}")
     L.append("// Ignored: joint limits (<limit>, <safety_controller>), <dynamics> (damping, friction),")
     L.append("// <calibration>, visuals, collisions, transmissions. Floating joints read 8 motor coefficients.")
     L.append("#pragma once")
@@ -423,14 +872,17 @@ def generate(urdf_path, robot_name, root, bodies, name, namespace, floating_base
     L.append(f"namespace {namespace} {{")
     L.append("")
     L.append("using tree = ctga::chains::tree<")
-    for k, b in enumerate(bodies):
-        end = ">;" if k == len(bodies) - 1 else ","
-        L.append(f"    ctga::chains::link<{b.parent}, ctga::chains::{b.cpp_joint}>{end}  "
-                 f"// body {b.index}: link {cpp_string(b.link.name)}, joint {cpp_string(b.joint_name)}")
+    for b in bodies:
+        L.append(f"    ctga::chains::link<{b.parent}, {b.cpp_joint}>,  "
+                 f"// body {b.index}: {cpp_string(b.name)}, joint {cpp_string(b.joint_name)}")
+    for k, f in enumerate(frames):
+        end = ">;" if k == len(frames) - 1 else ","
+        L.append(f"    ctga::chains::fixed_frame<{cpp_string(f.name)}, {f.body}>{end}  // frame {k}")
     L.append("")
-    L.append("// URDF link names (body i's frame) and the names of the joints joining them to their parents")
+    L.append("// Body i's URDF link (planar joints' virtual bodies: \"<joint>_x\", \"<joint>_y\") and the joint")
+    L.append("// joining it to its parent body")
     L.append("inline constexpr std::array<std::string_view, tree::size> body_names{")
-    L.extend(f"    {cpp_string(b.link.name)}," for b in bodies)
+    L.extend(f"    {cpp_string(b.name)}," for b in bodies)
     L.append("};")
     L.append("inline constexpr std::array<std::string_view, tree::size> joint_names{")
     L.extend(f"    {cpp_string(b.joint_name)}," for b in bodies)
@@ -442,26 +894,58 @@ def generate(urdf_path, robot_name, root, bodies, name, namespace, floating_base
     L.append("    ctga::chains::model<tree, T> m;")
     L.append(f"    m.gravity = ctga::vec3<T>{{{vec(gravity)}}};")
     for b in bodies:
-        inertial = b.link.inertial
-        u, theta = rpy_axis_angle(b.rpy)
-        axis = b.axis if b.axis is not None else [0.0, 0.0, 1.0]
-        L.append(f"    {{  // body {b.index}: link {cpp_string(b.link.name)}, joint {cpp_string(b.joint_name)} "
-                 f"({b.kind}{', axis ' + ' '.join(repr(a) for a in b.axis) if b.axis is not None else ''}); "
-                 f"origin xyz {' '.join(repr(x) for x in b.xyz)} rpy {' '.join(repr(x) for x in b.rpy)}")
-        L.append(f"        const auto x = ctga::chains::make_link<ctga::chains::{b.cpp_joint}>(")
-        L.append(f"            ctga::rigid_motion(ctga::make_translator({vec(b.xyz)}),")
-        L.append(f"                               ctga::make_rotor({num(theta)}, {vec(u)})),")
-        L.append(f"            ctga::make_mass_properties({num(inertial.mass)}, ctga::vec3<T>{{{vec(inertial.com)}}},")
-        L.append(f"                                       ctga::mat3<T>{{{{{{{vec(inertial.tensor[0])}}},")
-        L.append(f"                                                      {{{vec(inertial.tensor[1])}}},")
-        if b.cpp_joint in ("revolute_about", "prismatic_along"):  # the joints whose axis is a run-time parameter
-            L.append(f"                                                      {{{vec(inertial.tensor[2])}}}}}}}),")
-            L.append(f"            ctga::vec3<T>{{{vec(axis)}}});")
-        else:
-            L.append(f"                                                      {{{vec(inertial.tensor[2])}}}}}}}));")
+        desc = b.kind
+        if b.axis is not None:
+            desc += ", axis " + words(b.axis)
+        if b.coupling is not None:
+            desc += f", mimic: q = {b.coupling[0]!r} q[{b.urdf_joint.mimic.master}] + {b.coupling[1]!r}"
+        L.append(f"    {{  // body {b.index}: {cpp_string(b.name)}, joint {cpp_string(b.joint_name)} ({desc})")
+        j = b.urdf_joint
+        if j is not None and b.placement is not None and not b.placement.is_identity():
+            origin = f"origin xyz {words(j.xyz)} rpy {words(j.rpy)}"
+            pf = next((f for f in frames if f.name == j.parent), None)
+            if pf is not None and pf.via:
+                origin += f", after link {cpp_string(j.parent)}'s fixed placement in body {pf.body}"
+            L.append(f"        // placement: {origin}")
+        merged = [l.name for l, _ in b.parts[1:]]
+        if merged:
+            L.append("        // merged: " + ", ".join(cpp_string(n) for n in merged) +
+                     f"; total mass {b.mass!r}")
+        L.append(f"        const auto x = ctga::chains::make_link<{b.cpp_joint}>(")
+        motor = motor_lines(b.placement, "            ")
+        motor[-1] += ","
+        L.extend(motor)
+        check = "" if strict and b.mass > 0 else ", ctga::mass_check::as_given"
+        L.append(f"            ctga::make_mass_properties({num(b.mass)}, ctga::vec3<T>{{{vec(b.com)}}},")
+        L.append(f"                                       ctga::mat3<T>{{{{{{{vec(b.tensor[0])}}},")
+        L.append(f"                                                      {{{vec(b.tensor[1])}}},")
+        L.append(f"                                                      {{{vec(b.tensor[2])}}}}}}}{check})")
+        extra = []
+        if b.coupling is not None:
+            extra.append(f"ctga::chains::coupling<T>{{{vec(b.coupling)}}}")
+        if b.takes_axis:  # the joints whose axis is a run-time parameter
+            extra.append(f"ctga::vec3<T>{{{vec(b.axis)}}}")
+        if extra:
+            L[-1] += ","
+            for k, e in enumerate(extra):
+                L.append(f"            {e}" + ("," if k < len(extra) - 1 else ""))
+        L[-1] += ");"
         L.append("        if (!x) return {{}, x.error};")
         L.append(f"        m.template link<{b.index}>() = *x;")
         L.append("    }")
+    for k, f in enumerate(frames):
+        where = "the world" if f.body < 0 else f"body {f.body}"
+        via = f" (through {', '.join(cpp_string(v) for v in f.via)})" if f.via else ""
+        L.append(f"    {{  // frame {k}: link {cpp_string(f.name)} in {where}{via}")
+        L.append("        const auto f = ctga::chains::make_frame<T>(")
+        motor = motor_lines(f.pose, "            ")
+        motor[-1] += ");"
+        L.extend(motor)
+        L.append("        if (!f) return {{}, f.error};")
+        L.append(f"        m.frames[{k}] = *f;")
+        L.append("    }")
+    L.append("    if (const int b = ctga::chains::massless_subtree(m); b >= 0) return {{}, "
+             "ctga::error_code::massless_subtree};")
     L.append("    return {m, ctga::error_code::none};")
     L.append("}")
     L.append("")
@@ -481,16 +965,29 @@ def main(argv=None):
                     help="the root link becomes body 0 on a floating joint (else it is the fixed world)")
     ap.add_argument("--gravity", nargs=3, metavar=("GX", "GY", "GZ"), default=["0", "0", "-9.81"],
                     help="gravity in the world frame (default 0 0 -9.81)")
+    ap.add_argument("--keep-fixed", action="store_true",
+                    help="keep every link on a fixed joint as its own body on a fixed joint (default: merge it "
+                         "into its moving ancestor's body and keep it as a frame)")
+    ap.add_argument("--mimic", choices=("coupled", "independent"), default="coupled",
+                    help="coupled (default): a <mimic> joint follows its master (ctga::chains::mimic); "
+                         "independent: it is an ordinary joint with its own coordinate")
+    ap.add_argument("--strict", action="store_true",
+                    help="questionable inertia (not positive definite, triangle inequality) is an error, and "
+                         "bodies with mass use ctga's physical check")
     ap.add_argument("-o", "--output", help="the header to write (default: standard output)")
     args = ap.parse_args(argv)
+    model = None
     try:
         check_namespace(args.name, "--name")
         namespace = args.namespace if args.namespace is not None else args.name
         check_namespace(namespace, "--namespace")
         gravity = [parse_number(g, "--gravity") for g in args.gravity]
         robot_name, links, joints = parse_urdf(args.urdf)
-        root, bodies = build_tree(links, joints, args.floating_base)
-        text = generate(args.urdf, robot_name, root, bodies, args.name, namespace, args.floating_base, gravity)
+        model = build_tree(links, joints, args.floating_base, args.keep_fixed, args.mimic, args.strict)
+        for w in model.warnings:
+            print(f"{PROG}: warning: {w}", file=sys.stderr)
+        text = generate(args.urdf, robot_name, model, args.name, namespace, args.floating_base, gravity,
+                        args.keep_fixed, args.mimic, args.strict)
     except UrdfError as e:
         print(f"{PROG}: {e}", file=sys.stderr)
         return 1

@@ -5,6 +5,8 @@
 //   arm7       7 revolute joints about z, y, z, y, z, y, z, frames 0.3 m apart (a 7-dof arm)
 //   chain30    30 revolute joints cycling z, y, x, frames 0.1 m apart
 //   tree       a floating base with four legs of three revolute joints (hip x, thigh y, knee y)
+// arm7 has a named frame "tool" on its last body, tree a "foot" at the end of its front left leg
+// (frame_placement: turned and offset, for the frame Jacobians).
 //   chain<N>   N revolute joints cycling z, y, x (the scaling benchmarks, 1 … 64 bodies)
 //
 // Masses, centres of mass and inertia tensors are drawn once from a fixed seed: full tensors,
@@ -81,7 +83,7 @@ description<N> serial(const std::array<sp::joint_kind, 3>& cycle, std::size_t cy
 
 using arm7_tree = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_y>, ch::link<1, ch::revolute_z>,
                            ch::link<2, ch::revolute_y>, ch::link<3, ch::revolute_z>, ch::link<4, ch::revolute_y>,
-                           ch::link<5, ch::revolute_z>>;
+                           ch::link<5, ch::revolute_z>, ch::fixed_frame<"tool", 6>>;
 inline description<7> arm7() {
     return serial<7>({sp::joint_kind::revolute_z, sp::joint_kind::revolute_y, sp::joint_kind::revolute_z}, 2, 0.3, 7);
 }
@@ -109,7 +111,8 @@ using legged_tree =
              ch::link<0, ch::revolute_x>, ch::link<1, ch::revolute_y>, ch::link<2, ch::revolute_y>,      // front left
              ch::link<0, ch::revolute_x>, ch::link<4, ch::revolute_y>, ch::link<5, ch::revolute_y>,      // front right
              ch::link<0, ch::revolute_x>, ch::link<7, ch::revolute_y>, ch::link<8, ch::revolute_y>,      // hind left
-             ch::link<0, ch::revolute_x>, ch::link<10, ch::revolute_y>, ch::link<11, ch::revolute_y>>;  // hind right
+             ch::link<0, ch::revolute_x>, ch::link<10, ch::revolute_y>, ch::link<11, ch::revolute_y>,   // hind right
+             ch::fixed_frame<"foot", 3>>;                                                           // front left foot
 inline description<13> legged() {
     std::mt19937_64 rng(13);
     description<13> d{};
@@ -129,6 +132,11 @@ inline description<13> legged() {
 }
 
 // ---- building both implementations' models -----------------------------------------------------
+
+// Frame 0's placement in its body (both trees' frames): 0.25 m along the body's −z, turned 0.7 rad
+// about (1, 2, 2)/3.
+inline constexpr std::array<double, 3> frame_offset{0.02, -0.01, -0.25};
+inline constexpr std::array<double, 4> frame_rotation{0.7, 1.0 / 3, 2.0 / 3, 2.0 / 3};  // angle, unit axis
 
 template <class J>
 constexpr sp::joint_kind kind_of() {
@@ -155,7 +163,21 @@ ch::model<Tree> ctga_model(const description<N>& d) {
             m.template link<I>() = *link;
         }(), ...);
     }(std::make_index_sequence<N>{});
+    if constexpr (Tree::frame_count > 0)
+        m.frames[0] = *ch::make_frame(ctga::rigid_motion(ctga::make_translator(frame_offset[0], frame_offset[1], frame_offset[2]),
+                                                         ctga::make_rotor(frame_rotation[0], frame_rotation[1], frame_rotation[2],
+                                                                          frame_rotation[3])));
     return m;
+}
+
+// The same placement for the spatial code.
+inline spatial::se3 spatial_frame() {
+    const double th = frame_rotation[0], x = frame_rotation[1], y = frame_rotation[2], z = frame_rotation[3];
+    const double c = std::cos(th), s = std::sin(th), v = 1 - c;
+    return {{{c + v * x * x, v * x * y - s * z, v * x * z + s * y},
+             {v * y * x + s * z, c + v * y * y, v * y * z - s * x},
+             {v * z * x - s * y, v * z * y + s * x, c + v * z * z}},
+            {frame_offset[0], frame_offset[1], frame_offset[2]}};
 }
 
 template <std::size_t N>

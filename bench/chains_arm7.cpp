@@ -4,6 +4,6 @@
 namespace bench::chains {
 void add_arm7(std::vector<entry>& table) {
     static const auto f = make_fixture<arm7_tree>(arm7(), 71);
-    add_tree<algorithm::rnea, algorithm::aba, algorithm::crba, algorithm::fk>(table, "arm7", f);
+    add_tree<algorithm::rnea, algorithm::aba, algorithm::crba, algorithm::fk, algorithm::jacobian>(table, "arm7", f);
 }
 }  // namespace bench::chains

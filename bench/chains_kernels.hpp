@@ -1,6 +1,6 @@
 // The kernels of ctga_chains_bench (bench/chains.cpp): one non-inlined call (chain_kernel) of an
 // algorithm on a tree, in ctga or in the hand-written spatial code, registered as
-// <algorithm>_<tree>/<implementation>. Each tree's kernels are instantiated in their own
+// <algorithm>_<tree>/<implementation>; jacobian is the local Jacobian of the tree's frame 0. Each tree's kernels are instantiated in their own
 // translation unit (chains_arm7.cpp, …), so that no unit compiles every tree.
 #pragma once
 
@@ -18,7 +18,7 @@
 
 namespace bench::chains {
 
-enum class algorithm { fk, rnea, crba, aba };
+enum class algorithm { fk, rnea, crba, aba, jacobian };
 enum class implementation { ctga, spatial };
 
 template <class Tree>
@@ -27,6 +27,7 @@ struct fixture {
     ch::model<Tree> m;
     sp::model<n> sm;
     std::array<state<Tree>, 64> states;
+    spatial::se3 frame = spatial_frame();  // frame 0's placement (the Jacobians')
 };
 
 template <class Tree>
@@ -40,6 +41,7 @@ template <algorithm A, implementation I, class Tree>
         if constexpr (A == algorithm::fk) return ch::forward_kinematics(f.m, s.q, s.qd, s.qdd);
         else if constexpr (A == algorithm::rnea) return ch::rnea(f.m, s.q, s.qd, s.qdd);
         else if constexpr (A == algorithm::crba) return ch::crba(f.m, s.q);
+        else if constexpr (A == algorithm::jacobian) return ch::frame_jacobian(f.m, s.q, ch::frame_at<0>, ch::reference::local);
         else return ch::aba(f.m, s.q, s.qd, s.tau);
     } else {
         if constexpr (A == algorithm::fk) {
@@ -54,6 +56,10 @@ template <algorithm A, implementation I, class Tree>
             std::array<double, Tree::nv * Tree::nv> H;
             sp::crba(f.sm, s.q_spatial.data(), H.data());
             return H;
+        } else if constexpr (A == algorithm::jacobian) {
+            std::array<double, 6 * Tree::nv> J;
+            sp::frame_jacobian(f.sm, s.q_spatial.data(), static_cast<std::size_t>(Tree::frame_body[0]), f.frame, true, J.data());
+            return J;
         } else {
             ch::joint_vector<Tree> qdd;
             sp::aba(f.sm, s.q_spatial.data(), s.qd.data(), s.tau.data(), nullptr, qdd.data());
@@ -86,7 +92,7 @@ void add(std::vector<entry>& table, const std::string& name, const fixture<Tree>
 
 // Registers algorithms A... of one tree, in both implementations: <algorithm>_<label>/<implementation>.
 constexpr const char* name_of(algorithm a) {
-    return a == algorithm::fk ? "fk" : a == algorithm::rnea ? "rnea" : a == algorithm::crba ? "crba" : "aba";
+    return a == algorithm::fk ? "fk" : a == algorithm::rnea ? "rnea" : a == algorithm::crba ? "crba" : a == algorithm::aba ? "aba" : "jacobian";
 }
 template <algorithm... A, class Tree>
 void add_tree(std::vector<entry>& table, const std::string& label, const fixture<Tree>& f) {

@@ -4,6 +4,6 @@
 namespace bench::chains {
 void add_legged(std::vector<entry>& table) {
     static const auto f = make_fixture<legged_tree>(legged(), 73);
-    add_tree<algorithm::rnea, algorithm::aba, algorithm::crba, algorithm::fk>(table, "tree", f);
+    add_tree<algorithm::rnea, algorithm::aba, algorithm::crba, algorithm::fk, algorithm::jacobian>(table, "tree", f);
 }
 }  // namespace bench::chains

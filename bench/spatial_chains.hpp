@@ -606,6 +606,53 @@ void fk(const model<N>& m, const double* q, const double* qd, const double* qdd,
 }
 
 // ---------------------------------------------------------------------------------------------
+// The geometric Jacobian of a frame F fixed to body b (placement F in b), as Pinocchio's
+// computeFrameJacobian: the world poses, then for each joint on the path to the root its motion
+// subspace moved out, taken about the frame's origin p in world axes (local_world_aligned:
+// ω = R_j u, v = (t_j − p) × ω for a revolute joint, (0, R_j u) for a prismatic one) and, for
+// local, rotated into the frame's axes (R_Fᵀ). J is 6 × nv, column-major (column k at J + 6k).
+
+template <std::size_t N>
+void frame_jacobian(const model<N>& m, const double* q, std::size_t b, const se3& F, bool local, double* J) {
+    std::array<se3, N> pose;
+    fk(m, q, pose);
+    const se3 W = detail::compose(pose[b], F);
+    for (std::size_t k = 0; k < 6 * m.nv; ++k) J[k] = 0;
+    const auto put = [&](std::size_t col, vec3 w, vec3 v) {
+        if (local) w = detail::tmul(W.R, w), v = detail::tmul(W.R, v);
+        double* c = J + 6 * col;
+        c[0] = w.x, c[1] = w.y, c[2] = w.z, c[3] = v.x, c[4] = v.y, c[5] = v.z;
+    };
+    for (int i = static_cast<int>(b); i >= 0; i = m.bodies[static_cast<std::size_t>(i)].parent) {
+        const auto u = static_cast<std::size_t>(i);
+        const body& bd = m.bodies[u];
+        const se3& X = pose[u];
+        const vec3 r = X.t - W.t;
+        const std::size_t iv = static_cast<std::size_t>(m.cache[u].iv);
+        detail::dispatch(bd.kind, [&](auto kind) {
+            constexpr joint_kind K = decltype(kind)::value;
+            if constexpr (K == joint_kind::revolute_x || K == joint_kind::revolute_y || K == joint_kind::revolute_z) {
+                const vec3 w = detail::col(X.R, detail::axis_index<K>);
+                put(iv, w, cross(r, w));
+            } else if constexpr (K == joint_kind::revolute_axis) {
+                const vec3 w = X.R * bd.axis;
+                put(iv, w, cross(r, w));
+            } else if constexpr (K == joint_kind::prismatic_x || K == joint_kind::prismatic_y || K == joint_kind::prismatic_z) {
+                put(iv, {0, 0, 0}, detail::col(X.R, detail::axis_index<K>));
+            } else if constexpr (K == joint_kind::prismatic_axis) {
+                put(iv, {0, 0, 0}, X.R * bd.axis);
+            } else if constexpr (K == joint_kind::floating) {
+                for (int a = 0; a < 3; ++a) {
+                    const vec3 w = detail::col(X.R, a);
+                    put(iv + static_cast<std::size_t>(a), w, cross(r, w));
+                    put(iv + 3 + static_cast<std::size_t>(a), {0, 0, 0}, w);
+                }
+            }
+        });
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
 // Inverse dynamics: RNEA (Featherstone Table 5.1).
 
 template <std::size_t N>

@@ -9,7 +9,8 @@
 // (moved_out). From the world column (ω, v):
 //   world                 (ω, v)
 //   local_world_aligned   (ω, v + ω × p) = S_jk moved out by (R_j, t_j − p), p the frame's origin
-//   local                 R_Fᵀ (local_world_aligned column)
+//   local                 S_jk moved out by X_{F←j}, body j seen from the frame, accumulated
+//                         from the frame's body up: one composition per body (local_columns)
 // A mimic joint's column is added to its master's with its multiplier (J = J_all G, joints.hpp).
 //
 // J̇ along the motion (k with velocities): a joint's S is constant in its body, so its world
@@ -116,6 +117,74 @@ CTGA_ALWAYS_INLINE constexpr void for_each_column(const model<Tree, T>& m, Colum
         for_each_column<Tree::parent[j]>(m, column);
     }
 }
+// The world poses of body B and its ancestors only (a Jacobian needs no other body's): the rest
+// of the array is left unwritten.
+template <int B, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void path_poses(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                             std::array<motor_map<T>, Tree::size>& pose) noexcept {
+    if constexpr (B >= 0) {
+        constexpr std::size_t j = static_cast<std::size_t>(B);
+        constexpr int p = Tree::parent[j];
+        if constexpr (p < 0) {
+            pose[j] = algorithm_detail::joint_map<j>(m, q);
+        } else {
+            path_poses<p>(m, q, pose);
+            pose[j] = compose(pose[static_cast<std::size_t>(p)], algorithm_detail::joint_map<j>(m, q));
+        }
+    }
+}
+
+// The local Jacobian without world poses: going up from the frame's body b, X = X_{F←j} (body j's
+// frame seen from the frame's, starting from P⁻¹) gives column S_jk moved out by X, 6m for an
+// axis joint, and then X_{F←λ(j)} = X_{F←j} X_j⁻¹ with X_j body j's map in its parent (Map(j):
+// k.X[j], or computed from q). One composition per body, no rotation per column.
+template <int B, class Tree, class T, class Map>
+CTGA_ALWAYS_INLINE constexpr void local_columns(const model<Tree, T>& m, const motor_map<T>& X, const Map& map_of_body,
+                                                jacobian_matrix<Tree, T>& out) noexcept {
+    if constexpr (B >= 0) {
+        constexpr std::size_t j = static_cast<std::size_t>(B);
+        using Jt = typename Tree::template joint_at<j>;
+        if constexpr (moves<Jt>)
+            [&]<std::size_t... K>(std::index_sequence<K...>) {
+                (put_column<j, K>(m, out, moved_out(X, Jt::template subspace<K, T>(m.template link<j>().joint))), ...);
+            }(std::make_index_sequence<is_mimic<Jt> ? 1 : Jt::nv>{});
+        if constexpr (Tree::parent[j] >= 0) {
+            const motor_map<T> Xj = map_of_body(std::integral_constant<std::size_t, j>{});
+            motor_map<T> up;  // X Xj⁻¹: R Rjᵀ, t − (R Rjᵀ) tj
+            for (int r = 0; r < 3; ++r)
+                for (int c = 0; c < 3; ++c) up.R[r][c] = X.R[r][0] * Xj.R[c][0] + X.R[r][1] * Xj.R[c][1] + X.R[r][2] * Xj.R[c][2];
+            const vec3<T> u = linear3::apply(up.R, Xj.t);
+            up.t = {X.t[0] - u[0], X.t[1] - u[1], X.t[2] - u[2]};
+            local_columns<Tree::parent[j]>(m, up, map_of_body, out);
+        }
+    }
+}
+template <class Tree, class T, class F, class Map>
+CTGA_ALWAYS_INLINE constexpr jacobian_matrix<Tree, T> local_jacobian(const model<Tree, T>& m, F f, const Map& map_of_body) noexcept {
+    constexpr int b = frame_on<Tree, F>::body;
+    jacobian_matrix<Tree, T> out{};
+    if constexpr (b >= 0) local_columns<b>(m, inverse(placement(m, f)), map_of_body, out);
+    return out;
+}
+
+// J from the poses of the frame's body and its ancestors (world, local_world_aligned).
+template <class Tree, class T, class F>
+CTGA_ALWAYS_INLINE constexpr jacobian_matrix<Tree, T> jacobian(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& pose,
+                                                               F f, reference r) noexcept {
+    constexpr int b = frame_on<Tree, F>::body;
+    jacobian_matrix<Tree, T> out{};
+    if constexpr (b >= 0) {
+        const motor_map<T> W = frame_on<Tree, F>::placed ? compose(pose[b], placement(m, f)) : pose[b];
+        for_each_column<b>(m, [&](auto j, auto K, const auto& S) {
+            const motor_map<T>& G = pose[decltype(j)::value];
+            screw<T> c;
+            if (r == reference::world) c = moved_out(G, S);
+            else c = moved_out(motor_map<T>{G.R, {G.t[0] - W.t[0], G.t[1] - W.t[1], G.t[2] - W.t[2]}}, S);
+            put_column<decltype(j)::value, decltype(K)::value>(m, out, c);
+        });
+    }
+    return out;
+}
 }  // namespace frame_detail
 
 struct frame_jacobian_t {
@@ -123,29 +192,19 @@ struct frame_jacobian_t {
     template <class Tree, class T, class F>
     [[nodiscard]] constexpr jacobian_matrix<Tree, T> operator()(const model<Tree, T>& m, const kinematics<Tree, T>& k, F f,
                                                                 reference r) const noexcept {
-        using namespace frame_detail;
-        constexpr int b = frame_on<Tree, F>::body;
-        jacobian_matrix<Tree, T> out{};
-        if constexpr (b >= 0) {
-            const motor_map<T> W = frame_pose(m, k, f);
-            for_each_column<b>(m, [&](auto j, auto K, const auto& S) {
-                const motor_map<T>& G = k.pose[decltype(j)::value];
-                screw<T> c;
-                if (r == reference::world) c = moved_out(G, S);
-                else {
-                    c = moved_out(motor_map<T>{G.R, {G.t[0] - W.t[0], G.t[1] - W.t[1], G.t[2] - W.t[2]}}, S);
-                    if (r == reference::local) c = rotate_transposed(W.R, c);
-                }
-                put_column<decltype(j)::value, decltype(K)::value>(m, out, c);
-            });
-        }
-        return out;
+        if (r == reference::local) return frame_detail::local_jacobian(m, f, [&](auto j) { return k.X[decltype(j)::value]; });
+        return frame_detail::jacobian(m, k.pose, f, r);
     }
-    // … from q.
+    // … from q: only the poses of the frame's body and its ancestors are computed (a foot's
+    // Jacobian moves along its leg, not the other three).
     template <class Tree, class T, class F>
     [[nodiscard]] constexpr jacobian_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q, F f,
                                                                 reference r) const noexcept {
-        return (*this)(m, forward_kinematics(m, q), f, r);
+        if (r == reference::local)
+            return frame_detail::local_jacobian(m, f, [&](auto j) { return algorithm_detail::joint_map<decltype(j)::value>(m, q); });
+        std::array<motor_map<T>, Tree::size> pose;  // written for the path only, read for it only
+        frame_detail::path_poses<frame_detail::frame_on<Tree, F>::body>(m, q, pose);
+        return frame_detail::jacobian(m, pose, f, r);
     }
 };
 inline constexpr frame_jacobian_t frame_jacobian{};

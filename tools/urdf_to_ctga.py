@@ -55,7 +55,7 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     its own; MasterBody is the master joint's body (before or after the mimic's own body in the
     depth-first order, as the tree has it). Errors (naming the joint): the master does not exist,
     is not revolute, continuous or prismatic, or is itself a mimic; a mimic on a joint that is not
-    revolute, continuous or prismatic. --mimic independent instead makes mimic joints ordinary independent joints (the
+    revolute, continuous or prismatic (on a fixed joint it is ignored with a warning: nothing moves). --mimic independent instead makes mimic joints ordinary independent joints (the
     <mimic> element is then ignored once its numbers parse).
   * --floating-base: the root link becomes body 0 on a floating joint (identity placement) named
     after the root link (joint_names[0]; "_joint" appended if a URDF joint has that name). Without
@@ -660,19 +660,23 @@ def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupl
         raise UrdfError(f'the robot has no bodies: the root link "{root.name}" is the world and no joint moves '
                         "anything (use --floating-base to make it a free body)")
 
-    _couple_mimics(bodies, joints, joint_by_name, mimic_mode)
+    _couple_mimics(model, joints, joint_by_name, mimic_mode)
     _mass_properties(model, strict)
     return model
 
 
-def _couple_mimics(bodies, joints, joint_by_name, mimic_mode):
+def _couple_mimics(model, joints, joint_by_name, mimic_mode):
     if mimic_mode != "coupled":
         return
+    bodies = model.bodies
     body_of_joint = {b.urdf_joint.name: b for b in bodies if b.urdf_joint is not None and b.link is not None}
     for j in joints:
         if j.mimic is None:
             continue
         where = f'joint "{j.name}"'
+        if j.kind == "fixed":  # it does not move: nothing to couple (TALOS's gripper links)
+            model.warnings.append(f"{where}: <mimic> on a fixed joint is ignored (the joint does not move)")
+            continue
         if j.kind not in ONE_DOF:
             raise UrdfError(f'{where}: <mimic> on a {j.kind} joint (only revolute, continuous and prismatic joints '
                             "can mimic another; --mimic independent ignores <mimic>)")

@@ -1,0 +1,96 @@
+// The checker of tools/urdf_check.py: one robot header from tools/urdf_to_ctga.py (included as
+// CTGA_ROBOT_HEADER, namespace CTGA_ROBOT), its model built, and the self-consistency of the
+// dynamics at random states (a fixed seed), printed as one line of key=value pairs:
+//   round_trip   max over states of |ABA(q, q̇, RNEA(q, q̇, q̈)) − q̈| / |q̈|
+//   split        |H q̈ + C − τ| / |τ|, H from CRBA, C = RNEA(q, q̇, 0)
+//   spd          whether H is symmetric (|H − Hᵀ| / |H| ≤ 1e-12) and Cholesky factors it
+//   power        |dE/dt − q̇ᵀτ| / |q̇ᵀτ| at q̈ = ABA(τ): dE/dt = Σ v_i·(N_i a_i) − M g·ċ (the bodies'
+//                kinetic energy rate from their true accelerations, the potential's from the
+//                centre of mass's velocity), an identity no algorithm shares with ABA
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+#include CTGA_ROBOT_HEADER
+
+namespace ch = ctga::chains;
+namespace robot = CTGA_ROBOT;
+using tree = robot::tree;
+
+template <class V>
+double norm(const V& x) {
+    double s = 0;
+    for (double c : x) s += c * c;
+    return std::sqrt(s);
+}
+
+int main() {
+    const auto built = robot::make_model<double>();
+    if (!built) {
+        std::printf("error=%s\n", ctga::describe(built.error));
+        return 1;
+    }
+    const ch::model<tree> m = *built;
+    std::mt19937_64 rng(2027);
+    std::uniform_real_distribution<double> u(-1, 1);
+    double round_trip = 0, split = 0, power = 0, asym = 0;
+    bool spd = true;
+    for (int trial = 0; trial < 20; ++trial) {
+        ch::configuration<tree> q{};
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ([&] {
+                using J = typename tree::template joint_at<I>;
+                constexpr std::size_t o = tree::q_offset[I];
+                if constexpr (std::is_same_v<J, ch::floating>) {
+                    const auto g = ctga::rigid_motion(ctga::make_translator(u(rng), u(rng), u(rng)),
+                                                      ctga::make_rotor(3 * u(rng), u(rng), u(rng), 1.0));
+                    for (std::size_t k = 0; k < 8; ++k) q[o + k] = g[k];
+                } else if constexpr (J::nq == 1) {
+                    q[o] = 1.5 * u(rng);
+                }
+            }(), ...);
+        }(std::make_index_sequence<tree::size>{});
+        ch::joint_vector<tree> qd{}, qdd{};
+        for (std::size_t k = 0; k < tree::nv; ++k) qd[k] = u(rng), qdd[k] = 2 * u(rng);
+        const auto tau = ch::rnea(m, q, qd, qdd);
+        const auto back = ch::aba(m, q, qd, tau);
+        ch::joint_vector<tree> d{};
+        for (std::size_t k = 0; k < tree::nv; ++k) d[k] = back[k] - qdd[k];
+        round_trip = std::max(round_trip, norm(d) / norm(qdd));
+        const auto H = ch::crba(m, q);
+        const auto C = ch::rnea(m, q, qd, ch::joint_vector<tree>{});
+        double hn = 0, an = 0;
+        for (std::size_t r = 0; r < tree::nv; ++r) {
+            double x = C[r] - tau[r];
+            for (std::size_t c = 0; c < tree::nv; ++c) {
+                x += H[r][c] * qdd[c];
+                hn += H[r][c] * H[r][c];
+                an += (H[r][c] - H[c][r]) * (H[r][c] - H[c][r]);
+            }
+            d[r] = x;
+        }
+        split = std::max(split, norm(d) / norm(tau));
+        asym = std::max(asym, std::sqrt(an / hn));
+        spd = spd && static_cast<bool>(ctga::cholesky(H));
+        // power at q̈ = ABA(τ) for a random τ
+        ch::joint_vector<tree> tau2{};
+        for (std::size_t k = 0; k < tree::nv; ++k) tau2[k] = 5 * u(rng);
+        const auto a2 = ch::aba(m, q, qd, tau2);
+        const auto k = ch::forward_kinematics(m, q, qd, a2);
+        double dT = 0;
+        [&]<std::size_t... I>(std::index_sequence<I...>) {
+            ((dT += ctga::pairing(ctga::momentum(m.template link<I>().inertia, k.a[I]), k.v[I])), ...);
+        }(std::make_index_sequence<tree::size>{});
+        const auto com = ch::center_of_mass(m, k);
+        const double dV = -com.mass * (m.gravity[0] * com.velocity[0] + m.gravity[1] * com.velocity[1] + m.gravity[2] * com.velocity[2]);
+        double P = 0, scale = 0;
+        for (std::size_t i = 0; i < tree::nv; ++i) P += qd[i] * tau2[i], scale += std::abs(qd[i] * tau2[i]);
+        power = std::max(power, std::abs(dT + dV - P) / scale);
+    }
+    std::printf("bodies=%zu frames=%zu nq=%zu nv=%zu mimic=%d mass=%.6g round_trip=%.1e split=%.1e spd=%s asym=%.1e power=%.1e\n",
+                tree::size, tree::frame_count, tree::nq, tree::nv, int(tree::has_mimic),
+                ch::center_of_mass(m, ch::forward_kinematics(m, ch::configuration<tree>{})).mass, round_trip, split,
+                spd ? "yes" : "no", asym, power);
+    return round_trip <= 1e-10 && split <= 1e-10 && spd && asym <= 1e-12 && power <= 1e-10 ? 0 : 2;
+}

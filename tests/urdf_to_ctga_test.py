@@ -88,9 +88,11 @@ def body_block(header, index):
     return header[start:header.index("m.template link<", start)]
 
 
-def frame_block(header, index):
-    start = header.index(f"{{  // frame {index}:")
-    return header[start:header.index(f"m.frames[{index}] = *f;", start)]
+def frame_motor(header, index):
+    """(translation, theta, unit axis) of frame index's row of the frame_placements table."""
+    row = re.search(r"^        \{([^}]*)\},  // frame " + str(index) + ":", header, re.M)
+    x = numbers(row.group(1))
+    return x[0:3], x[3], x[4:7]
 
 
 def motor(block):
@@ -700,14 +702,14 @@ class Converter(unittest.TestCase):
 
     def test_frames(self):
         header = self.convert(self.merge_robot())
+        # one loop builds every frame's placement from the table (make_frame, checked)
+        self.assertIn("ctga::chains::make_frame<T>(", header)
+        self.assertIn("if (!f) return {{}, f.error};", header)
         # every link, depth first, the root first; children in document order (c before g)
         self.assertEqual(frame_lines(header), [("base", -1), ("a", 0), ("c", 0), ("d", 0), ("e", 1), ("g", 0)])
         for k, (name, body) in enumerate(frame_lines(header)):
             with self.subTest(frame=name):
-                block = frame_block(header, k)
-                self.assertIn(f"ctga::chains::make_frame<T>(", block)
-                self.assertIn("if (!f) return {{}, f.error};", block)
-                t, theta, u = motor(block)
+                t, theta, u = frame_motor(header, k)
                 if name in ("base", "a", "e"):  # a body's own link (or the world's root): identity
                     self.assertEqual((t, theta, u), ([0.0] * 3, 0.0, [0.0, 0.0, 1.0]))
                     continue
@@ -716,7 +718,7 @@ class Converter(unittest.TestCase):
                 self.assert_rotation(theta, u, R)
         self.assertIn('// frame 3: link "d" in body 0 (through "jc", "jd")', header)
         # every frame is set, after the links and before the massless-subtree check
-        self.assertLess(header.index("m.template link<1>() = *x;"), header.index("m.frames[0] = *f;"))
+        self.assertLess(header.index("m.template link<1>() = *x;"), header.index("m.frames[k] = *f;"))
         self.assertLess(header.index("m.frames[5] = *f;"), header.index("ctga::chains::massless_subtree(m)"))
         # links fixed to the world's root are frames of the world, placed in it
         text = robot(link("world", ""), joint("j0", "fixed", "world", "plate", xyz="1 0 0", rpy="0 0 0.5"),
@@ -725,7 +727,7 @@ class Converter(unittest.TestCase):
         header = self.convert(text)
         self.assertEqual(frame_lines(header), [("world", -1), ("plate", -1), ("arm", 0)])
         self.assertIn('their inertia dropped: "plate" (mass 3.0)', header)
-        t, theta, u = motor(frame_block(header, 1))
+        t, theta, u = frame_motor(header, 1)
         self.assertEqual(t, [1.0, 0.0, 0.0])
         self.assert_rotation(theta, u, rpy_matrix_here(0, 0, 0.5))
         t, theta, u = motor(body_block(header, 0))
@@ -739,7 +741,7 @@ class Converter(unittest.TestCase):
         self.assertEqual(names(header, "joint_names"), ["ja", "jc", "jd", "je", "jg"])
         self.assertEqual(frame_lines(header), [("base", -1), ("a", 0), ("c", 1), ("d", 2), ("e", 3), ("g", 4)])
         for k in range(6):
-            self.assertEqual(motor(frame_block(header, k))[:2], ([0.0] * 3, 0.0))
+            self.assertEqual(frame_motor(header, k)[:2], ([0.0] * 3, 0.0))
         # each body keeps its own link's numbers; the massless g is a massless body
         m, c, irpy, _ = self.MERGE_PARTS["c"]
         self.assertEqual(mass_properties(body_block(header, 1))[:2], (m, c))
@@ -839,9 +841,9 @@ class Converter(unittest.TestCase):
         self.assert_close(t, [0.0, 0.0, 0.1625])
         self.assert_rotation(theta, u, rpy_matrix_here(0, 0, math.pi))
         # flange: the rotation of its rpy; tool0 (flange then tool0): wrist_3's own axes again
-        t, theta, u = motor(frame_block(header, 8))
+        t, theta, u = frame_motor(header, 8)
         self.assert_rotation(theta, u, rpy_matrix_here(0, -math.pi / 2, -math.pi / 2))
-        t, theta, u = motor(frame_block(header, 9))
+        t, theta, u = frame_motor(header, 9)
         self.assertEqual(t, [0.0] * 3)
         self.assert_rotation(theta, u, eye(), 1e-15)
         masses = [mass_properties(body_block(header, b))[0] for b in range(6)]
@@ -866,7 +868,7 @@ class Converter(unittest.TestCase):
         # the base body lumps the camera: 25 + 0.2 kg
         self.assert_close(mass_properties(body_block(header, 2))[0], 25.2)
         # the imu frame: yawed by pi/2
-        t, theta, u = motor(frame_block(header, 2))
+        t, theta, u = frame_motor(header, 2)
         self.assertEqual(t, [0.1, 0.0, 0.21])
         self.assert_rotation(theta, u, rpy_matrix_here(0, 0, math.pi / 2))
         # --strict: the camera is an error; --mimic independent: one more coordinate
@@ -891,7 +893,7 @@ class Converter(unittest.TestCase):
         self.assertIn('// merged: "base_inertia", "imu_link", "face", "depth_camera", "depth_camera_optical"',
                       body_block(header, 0))
         # the foot: through the shank_fixed link (yawed by pi/2 on the left legs)
-        t, theta, u = motor(frame_block(header, 10))
+        t, theta, u = frame_motor(header, 10)
         self.assert_close(t, [0.1 + 0.08795, -0.02 + 0.01305, -0.33797])
         self.assert_rotation(theta, u, rpy_matrix_here(0, 0, math.pi / 2))
 

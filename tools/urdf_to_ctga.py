@@ -869,6 +869,7 @@ def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravi
     L.append("#pragma once")
     L.append("")
     L.append("#include <array>")
+    L.append("#include <cstddef>")
     L.append("#include <string_view>")
     L.append("")
     L.append("#include <ctga/ctga.hpp>")
@@ -937,17 +938,22 @@ def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravi
         L.append("        if (!x) return {{}, x.error};")
         L.append(f"        m.template link<{b.index}>() = *x;")
         L.append("    }")
+    # the frames' placements as a table and one loop (one copy of the motor code, whatever the count)
+    L.append("    // each frame's placement in its body: translation (x, y, z), then rotation angle and unit axis")
+    L.append(f"    const T frame_placements[{len(frames)}][7] = {{")
     for k, f in enumerate(frames):
         where = "the world" if f.body < 0 else f"body {f.body}"
         via = f" (through {', '.join(cpp_string(v) for v in f.via)})" if f.via else ""
-        L.append(f"    {{  // frame {k}: link {cpp_string(f.name)} in {where}{via}")
-        L.append("        const auto f = ctga::chains::make_frame<T>(")
-        motor = motor_lines(f.pose, "            ")
-        motor[-1] += ");"
-        L.extend(motor)
-        L.append("        if (!f) return {{}, f.error};")
-        L.append(f"        m.frames[{k}] = *f;")
-        L.append("    }")
+        u, theta = quat_axis_angle(f.pose.q)
+        L.append(f"        {{{vec(f.pose.p)}, {num(theta)}, {vec(u)}}},  // frame {k}: link {cpp_string(f.name)} in {where}{via}")
+    L.append("    };")
+    L.append("    for (std::size_t k = 0; k < tree::frame_count; ++k) {")
+    L.append("        const T* x = frame_placements[k];")
+    L.append("        const auto f = ctga::chains::make_frame<T>(")
+    L.append("            ctga::rigid_motion(ctga::make_translator(x[0], x[1], x[2]), ctga::make_rotor(x[3], x[4], x[5], x[6])));")
+    L.append("        if (!f) return {{}, f.error};")
+    L.append("        m.frames[k] = *f;")
+    L.append("    }")
     L.append("    if (const int b = ctga::chains::massless_subtree(m); b >= 0) return {{}, "
              "ctga::error_code::massless_subtree};")
     L.append("    return {m, ctga::error_code::none};")

@@ -42,7 +42,9 @@ cmake --build "$BUILD_DIR" --target ctga_chains_bench ctga_chains_scaling_small 
     --benchmark_out="$out/chains.json" --benchmark_out_format=json
 : >"$out/chains_instructions.txt"
 for tree in arm7 chain30 tree; do
-    for a in rnea aba crba fk; do
+    algorithms=(rnea aba crba fk)
+    [[ $tree == chain30 ]] || algorithms+=(jacobian)  # the trees with a named frame
+    for a in "${algorithms[@]}"; do
         for impl in ctga spatial; do
             total=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect='*chain_kernel*' \
                 "$out/ctga_chains_bench" --repeat "${a}_$tree/$impl" "$calls" 2>&1 | awk '/Collected/ {print $4}')

@@ -73,31 +73,38 @@ def verdict(value, limit):
 
 CHAIN_TREES = [("arm7", "7-dof arm (revolute z, y, z, y, z, y, z)"), ("chain30", "30-body chain (revolute z, y, x, …)"),
                ("tree", "floating base with four 3-joint legs (13 bodies, 18 dofs)")]
-CHAIN_ALGORITHMS = ["rnea", "aba", "crba", "fk"]
-# issue 15: on the 7-dof arm, ctga/spatial ≤ 1.0 on RNEA and ABA, ≤ 1.2 on CRBA
-CHAIN_TARGET = {("rnea", "arm7"): 1.0, ("aba", "arm7"): 1.0, ("crba", "arm7"): 1.2}
+CHAIN_ALGORITHMS = ["rnea", "aba", "crba", "fk", "jacobian"]
+# issue 15: on the 7-dof arm, ctga/spatial ≤ 1.0 on RNEA and ABA, ≤ 1.2 on CRBA; issue 27: a frame
+# Jacobian ≤ 1.0 (arm and legged tree), RNEA and ABA of the legged tree (a merged quadruped) ≤ 1.0
+CHAIN_TARGET = {("rnea", "arm7"): 1.0, ("aba", "arm7"): 1.0, ("crba", "arm7"): 1.2, ("jacobian", "arm7"): 1.0,
+                ("jacobian", "tree"): 1.0, ("rnea", "tree"): 1.0, ("aba", "tree"): 1.0}
 
 
 def chains_section(chains_json, chains_instr, scaling_svg, scaling_jsons):
     _, t = medians(chains_json)
     ins = instructions(chains_instr)
-    out = ["## Kinematic trees: RNEA, ABA, CRBA, forward kinematics", "",
+    out = ["## Kinematic trees: RNEA, ABA, CRBA, forward kinematics, frame Jacobians", "",
            "`ctga_chains_bench` (`bench/chains.cpp`): ctga::chains against hand-written spatial code",
            "(`bench/spatial_chains.hpp`: Featherstone's algorithms with Pinocchio-like joint specialisation,",
            "3×3 rotation + translation placements, run-time structure). Trees in `bench/chain_models.hpp`;",
-           "one non-inlined call on one of 64 random states; fk is poses, velocities and accelerations.", "",
+           "one non-inlined call on one of 64 random states; fk is poses, velocities and accelerations;",
+           "jacobian is the local Jacobian of a placed frame (arm7: on the last body; tree: a front foot),",
+           "the spatial code's as Pinocchio's computeFrameJacobian (all poses, then the path's columns).", "",
            "| algorithm | tree | ctga | spatial | ctga/spatial | instr. ctga | instr. spatial |",
            "| --- | --- | --- | --- | --- | --- | --- |"]
     for tree, _ in CHAIN_TREES:
         for a in CHAIN_ALGORITHMS:
             name = f"{a}_{tree}"
             c, sp = t.get((name, "ctga")), t.get((name, "spatial"))
+            if c is None and sp is None:
+                continue  # (no frame Jacobian on chain30)
             r = c / sp if c and sp else None
             mark = verdict(r, CHAIN_TARGET[(a, tree)]) if (a, tree) in CHAIN_TARGET else ""
             out.append(f"| {a} | {tree} | {fmt_time(c)} | {fmt_time(sp)} | {ratio(c, sp)}{mark} | "
                        f"{ins.get((name, 'ctga'), '—')} | {ins.get((name, 'spatial'), '—')} |")
     out += ["", "Trees: " + "; ".join(f"**{k}** {d}" for k, d in CHAIN_TREES) + ".",
-            "Targets (issue 15): on the arm ctga/spatial ≤ 1.0 for RNEA and ABA, ≤ 1.2 for CRBA (✓/✗).", ""]
+            "Targets (✓/✗): issue 15, on the arm ctga/spatial ≤ 1.0 for RNEA and ABA, ≤ 1.2 for CRBA; issue 27,",
+            "frame Jacobians ≤ 1.0, and RNEA and ABA of the legged tree (a merged quadruped) ≤ 1.0.", ""]
     # scaling: time against the number of bodies
     series = {}
     for path in scaling_jsons:

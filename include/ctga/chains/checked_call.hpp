@@ -5,7 +5,8 @@
 //
 // The algorithms are plain arithmetic: a NaN in q gives a NaN in τ. checked_call runs one
 // on inputs it has checked and checks its result, so nothing non-finite passes for an answer:
-//   non_finite    a NaN or infinity in the model (a link's placement, inertia or axis, gravity),
+//   non_finite    a NaN or infinity in the model (a link's placement, inertia, axis or coupling,
+//                 a frame's placement, gravity),
 //                 in q, q̇, q̈, τ, the wrenches, or in the result
 //   not_a_motor   a floating joint's configuration with a zero rotor part (no rigid motion)
 // (make_link checked each link's physics when the model was built; a model edited afterwards is
@@ -33,8 +34,8 @@ constexpr bool finite_all(const T& x) noexcept {
     if constexpr (std::is_arithmetic_v<T>) return is_finite(x);
     else if constexpr (requires { x.R; x.t; }) return finite_all(x.R) && finite_all(x.t);
     else if constexpr (requires { x.X; x.pose; x.v; x.a; }) return finite_all(x.X) && finite_all(x.pose) && finite_all(x.v) && finite_all(x.a);
-    else if constexpr (requires { x.links; x.gravity; }) {  // a model: every link's numbers and gravity
-        bool ok = finite_all(x.gravity);
+    else if constexpr (requires { x.links; x.gravity; }) {  // a model: every link's numbers, frames, gravity
+        bool ok = finite_all(x.gravity) && finite_all(x.frames);
         boost::hana::for_each(x.links, [&](const auto& l) {
             ok = ok && finite_all(l.placement) && finite_all(l.inertia) && finite_all(l.joint);
         });
@@ -43,6 +44,8 @@ constexpr bool finite_all(const T& x) noexcept {
         return std::apply([](const auto&... p) { return (finite_all(p) && ...); }, x.parameters());
     } else if constexpr (requires { x.u; }) {  // a joint's run-time axis
         return finite_all(x.u);
+    } else if constexpr (requires { x.multiplier; x.offset; x.joint; }) {  // a mimic joint's coupling
+        return is_finite(x.multiplier) && is_finite(x.offset) && finite_all(x.joint);
     } else if constexpr (std::is_empty_v<T>) {  // a joint without parameters
         return true;
     } else if constexpr (multivector_type<T>) {

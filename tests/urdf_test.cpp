@@ -1,10 +1,24 @@
 // Robots described in URDF (tests/data/arm7.urdf, tests/data/quadruped.urdf), converted to C++
 // headers by tools/urdf_to_ctga.py at build time (tests/CMakeLists.txt), against an independent
 // description: the same robots written here by hand from the URDF files' numbers (roll-pitch-yaw
-// and the inertial frames' rotations done here in C++, not by the script) and run through the
-// Featherstone reference (support/featherstone.hpp). FK, RNEA and CRBA agree to 1e-12 at random
-// states; the generated tree types, names and float models are checked too. One unit: most of its
-// compile time is the headers (ctga.hpp, Eigen, Catch2), so two parts would cost more in all.
+// and the inertial frames' rotations done here in C++, not by the script), every URDF link a body
+// (fixed joints included), run through the Featherstone reference (support/featherstone.hpp,
+// support/featherstone_frames.hpp).
+//
+//   * --keep-fixed headers (arm7_kept, quadruped_kept): every link a body, against that reference
+//     as it is;
+//   * the default headers (arm7, quadruped: fixed links merged into their moving parent's body)
+//     against the reference's merge_fixed (RBDA's composite-inertia sum, frames re-expressed):
+//     the merged bodies' parameters, and at random states the bodies' FK (poses, velocities,
+//     accelerations), every URDF link's frame by name (find_frame: pose, its body, the Jacobian in
+//     the three references), RNEA, CRBA and ABA.
+// Tolerances: parameters 1e-15 (placements, mass, h, I_o of numbers ≤ 10: a few roundings),
+// everything else 1e-12 relative (support/urdf_compare.hpp's measures; worst values printed). Also
+// the generated tree types, names (bodies, joints, frames: every URDF link) and the float models.
+// The other fixtures (ur5e, legged, mobile_gripper) are urdf_fixtures_test.cpp's.
+// Two units (support/parts.hpp): arm7 and the rest, quadruped (as one unit 49 s and 1.9 GB with
+// g++ -O2).
+// PARTS: 2
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -19,17 +33,26 @@
 
 #include <ctga/chains/algorithms.hpp>
 
-#include "arm7.hpp"       // generated: tools/urdf_to_ctga.py tests/data/arm7.urdf --name arm7
-#include "quadruped.hpp"  // generated: ... tests/data/quadruped.urdf --name quadruped --floating-base
+#include "arm7.hpp"            // generated: tools/urdf_to_ctga.py tests/data/arm7.urdf --name arm7
+#include "arm7_kept.hpp"       // ... --name arm7_kept --keep-fixed
+#include "quadruped.hpp"       // ... tests/data/quadruped.urdf --name quadruped --floating-base
+#include "quadruped_kept.hpp"  // ... --name quadruped_kept --floating-base --keep-fixed
 #include "support/catch.hpp"
 #include "support/featherstone.hpp"
-#include "support/relative_error.hpp"
+#include "support/featherstone_frames.hpp"
+#include "support/parts.hpp"
 #include "support/random_tree.hpp"
+#include "support/relative_error.hpp"
+#include "support/urdf_compare.hpp"
 
 namespace {
 
 namespace ch = ctga::chains;
 namespace fs = ctga::test::featherstone;
+using ctga::test::urdf::pose_error;
+using ctga::test::urdf::rpy_rotation;
+using ctga::test::urdf::rel;
+using ctga::test::urdf::W;
 
 // ---- the robots as written in their URDF files ------------------------------------------------
 
@@ -90,18 +113,6 @@ const std::vector<urdf_body> quadruped_urdf{
     {15, F, Z, {0, 0, -0.2}, O, 0.06, O, O, 9.6e-06, 0, 0, 9.6e-06, 0, 9.6e-06},
 };
 
-// URDF's roll, pitch, yaw about the fixed axes: R = Rz(yaw) Ry(pitch) Rx(roll), each the
-// right-handed elementary rotation written out.
-fs::mat3 rpy_rotation(const v3& rpy) {
-    const double cr = std::cos(rpy[0]), sr = std::sin(rpy[0]), cp = std::cos(rpy[1]), sp = std::sin(rpy[1]),
-                 cy = std::cos(rpy[2]), sy = std::sin(rpy[2]);
-    fs::mat3 Rx, Ry, Rz;
-    Rx << 1, 0, 0, 0, cr, -sr, 0, sr, cr;
-    Ry << cp, 0, sp, 0, 1, 0, -sp, 0, cp;
-    Rz << cy, -sy, 0, sy, cy, 0, 0, 0, 1;
-    return Rz * Ry * Rx;
-}
-
 fs::vec3 eigen(const v3& a) { return fs::vec3(a[0], a[1], a[2]); }
 
 // The reference model: joint frame = the joint's <origin>, body inertia about the com in the
@@ -126,19 +137,42 @@ fs::model reference_of(const std::vector<urdf_body>& urdf) {
     return m;
 }
 
+// Every URDF link's name, in the order of the bodies above; the fixed root link of arm7 (the
+// world) first.
+const std::vector<std::string_view> arm7_links{"base_link", "link1", "link2", "link3", "link4",
+                                               "link5",     "link6", "link7", "tool"};
+const std::vector<std::string_view> quadruped_links{
+    "trunk",  "FL_hip", "FL_thigh", "FL_calf", "FL_foot", "FR_hip", "FR_thigh", "FR_calf", "FR_foot",
+    "RL_hip", "RL_thigh", "RL_calf", "RL_foot", "RR_hip", "RR_thigh", "RR_calf", "RR_foot"};
+
+// The robot as the reference sees it: its bodies and a frame per URDF link (the link's own body
+// frame; the world for a fixed root link), named as the URDF names the links.
+struct reference_robot {
+    fs::model model;
+    std::vector<fs::frame> frames;
+    std::vector<std::string_view> frame_names;
+};
+
+reference_robot reference_robot_of(const std::vector<urdf_body>& urdf, const std::vector<std::string_view>& links,
+                                   bool world_root) {
+    reference_robot r;
+    r.model = reference_of(urdf);
+    r.frame_names = links;
+    if (world_root) r.frames.push_back(fs::frame{-1, fs::mat3::Identity(), fs::vec3::Zero()});
+    for (int i = 0; i < r.model.size(); ++i) r.frames.push_back(fs::frame{i, fs::mat3::Identity(), fs::vec3::Zero()});
+    return r;
+}
+
+// The fixed links merged into their moving ancestors by the reference (merge_fixed), the frames
+// re-expressed on the merged bodies.
+reference_robot merged(const reference_robot& r) {
+    const fs::merged_model mm = fs::merge_fixed(r.model, r.frames);
+    return reference_robot{mm.merged, mm.frames, r.frame_names};
+}
+
 // ---- comparisons -------------------------------------------------------------------------------
 
 using ctga::test::rel_error;
-
-double max_abs_diff(const ctga::motor_map<double>& G, const fs::mat3& R, const fs::vec3& t) {
-    double e = 0;
-    for (int r = 0; r < 3; ++r) {
-        e = std::max(e, std::abs(G.t[static_cast<std::size_t>(r)] - t[r]));
-        for (int c = 0; c < 3; ++c)
-            e = std::max(e, std::abs(G.R[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] - R(r, c)));
-    }
-    return e;
-}
 
 // The generated model's parameters against the reference's, body by body: the placement (R, t)
 // and the ten inertia parameters (m, h = m c, I_o: RBDA's spatial inertia about the body origin).
@@ -150,17 +184,17 @@ void compare_parameters(const ch::model<Tree>& m, const fs::model& ref) {
             INFO("body " << I);
             const fs::body& b = ref[static_cast<int>(I)];
             const auto& L = m.template link<I>();
-            CHECK(max_abs_diff(L.placement, b.rotation, b.translation) < 1e-14);
+            CHECK(W("parameters: placement", pose_error(L.placement, b.rotation, b.translation)) < 1e-15);
             const fs::mat6 N = fs::spatial_inertia(b);
             const ctga::body_inertia<double>& n = L.inertia;
-            CHECK(std::abs(n.mass() - N(3, 3)) < 1e-15);
+            CHECK(W("parameters: mass", std::abs(n.mass() - N(3, 3))) < 1e-15);
             const ctga::vec3<double> h = n.first_moment();
             const ctga::mat3<double> Io = n.inertia_o();
             const fs::vec3 h_ref = b.mass * b.com;
             for (int r = 0; r < 3; ++r) {
-                CHECK(std::abs(h[static_cast<std::size_t>(r)] - h_ref[r]) < 1e-15);
+                CHECK(W("parameters: h", std::abs(h[static_cast<std::size_t>(r)] - h_ref[r])) < 1e-15);
                 for (int c = 0; c < 3; ++c)
-                    CHECK(std::abs(Io[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] - N(r, c)) < 1e-15);
+                    CHECK(W("parameters: I_o", std::abs(Io[static_cast<std::size_t>(r)][static_cast<std::size_t>(c)] - N(r, c))) < 1e-15);
             }
             if constexpr (std::is_same_v<typename Tree::template joint_at<I>, ch::revolute_about>) {
                 for (int r = 0; r < 3; ++r) CHECK(std::abs(L.joint.u[static_cast<std::size_t>(r)] - b.axis[r]) < 1e-15);
@@ -172,47 +206,58 @@ void compare_parameters(const ch::model<Tree>& m, const fs::model& ref) {
     CHECK(m.gravity[2] == ref.gravity[2]);
 }
 
-// FK (poses, velocities, accelerations), RNEA and CRBA at random states, the same numbers given
-// to both; a floating joint's q is ctga's motor (8 numbers) and the reference's (x, y, z, qw, qx,
-// qy, qz).
+// At random states, the same numbers given to both (a floating joint's q is ctga's motor, 8
+// numbers, and the reference's (x, y, z, qw, qx, qy, qz)): FK of every body (pose, velocity,
+// acceleration), every URDF link's frame found by its name (its body, pose and Jacobian in the
+// three references), RNEA, CRBA, and ABA at random τ.
 template <class Tree>
-void compare_dynamics(const ch::model<Tree>& m, const fs::model& ref, std::uint64_t seed, int draws) {
+void compare_dynamics(const ch::model<Tree>& m, const reference_robot& robot, std::uint64_t seed, int draws) {
+    const fs::model& ref = robot.model;
+    REQUIRE(ref.size() == static_cast<int>(Tree::size));
+    // every URDF link is a frame, and nothing else is
+    REQUIRE(Tree::frame_count == robot.frame_names.size());
+    std::vector<std::size_t> frame_of(robot.frames.size());
+    for (std::size_t j = 0; j < robot.frames.size(); ++j) {
+        INFO("frame " << robot.frame_names[j]);
+        const ctga::checked<std::size_t> k = Tree::find_frame(robot.frame_names[j]);
+        REQUIRE(k);
+        frame_of[j] = *k;
+        CHECK(Tree::frame_body[*k] == robot.frames[j].parent);  // the merged link's body
+    }
+    constexpr fs::reference fs_reference[3] = {fs::reference::local, fs::reference::world, fs::reference::local_world_aligned};
     std::mt19937_64 rng(seed);
     for (int n = 0; n < draws; ++n) {
         INFO("draw " << n);
-        ch::configuration<Tree> q{};
-        ch::joint_vector<Tree> qd{}, qdd{};
-        Eigen::VectorXd q_ref(ref.nq()), qd_ref(ref.nv()), qdd_ref(ref.nv());
-        for (int i = 0; i < ref.size(); ++i) {
-            const std::size_t qo = Tree::q_offset[static_cast<std::size_t>(i)];
-            const int qr = ref.q_index(i);
-            if (ref[i].kind == fs::joint_kind::floating) {
-                const Eigen::Quaterniond quat(fs::random_rotation(rng));
-                const fs::vec3 t = fs::uniform_vec3(rng, 1.0);
-                const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(t[0], t[1], t[2]),
-                                                                 ctga::rotor<double>{quat.w(), quat.x(), quat.y(), quat.z()});
-                if constexpr (Tree::nq >= 8)  // (else GCC sees q[qo + 7] out of the arm's 7 numbers)
-                    for (std::size_t k = 0; k < 8; ++k) q[qo + k] = g[k];
-                q_ref.segment<3>(qr) = t;
-                q_ref.segment<4>(qr + 3) << quat.w(), quat.x(), quat.y(), quat.z();
-            } else if (ref[i].kind != fs::joint_kind::fixed) {
-                q[qo] = q_ref[qr] = fs::uniform(rng, -3, 3);
-            }
-        }
-        for (std::size_t k = 0; k < Tree::nv; ++k) {
-            qd[k] = qd_ref[static_cast<Eigen::Index>(k)] = fs::uniform(rng, -2, 2);
-            qdd[k] = qdd_ref[static_cast<Eigen::Index>(k)] = fs::uniform(rng, -2, 2);
-        }
+        Eigen::VectorXd q_ref;
+        const ch::configuration<Tree> q = ctga::test::urdf::random_configuration<Tree>(rng, &q_ref);
+        REQUIRE(q_ref.size() == ref.nq());
+        const ch::joint_vector<Tree> qd = ctga::test::urdf::random_joint_vector<Tree>(rng);
+        const ch::joint_vector<Tree> qdd = ctga::test::urdf::random_joint_vector<Tree>(rng);
+        const ch::joint_vector<Tree> tau = ctga::test::urdf::random_joint_vector<Tree>(rng, 20);
+        const Eigen::VectorXd qd_ref = ctga::test::urdf::eigen_vector(qd), qdd_ref = ctga::test::urdf::eigen_vector(qdd),
+                              tau_ref = ctga::test::urdf::eigen_vector(tau);
         const ch::kinematics<Tree> k = ch::forward_kinematics(m, q, qd, qdd);
         const fs::kinematics kr = fs::fk(ref, q_ref, qd_ref, qdd_ref);
         for (std::size_t i = 0; i < Tree::size; ++i) {
             INFO("body " << i);
-            CHECK(max_abs_diff(k.pose[i], kr.bodies[i].rotation, kr.bodies[i].origin) < 1e-12);
-            CHECK(rel_error(k.v[i], kr.bodies[i].velocity) < 1e-12);
-            CHECK(rel_error(k.a[i], kr.bodies[i].acceleration) < 1e-12);
+            CHECK(W("FK: pose", pose_error(k.pose[i], kr.bodies[i].rotation, kr.bodies[i].origin)) < 1e-12);
+            CHECK(W("FK: velocity", rel_error(k.v[i], kr.bodies[i].velocity)) < 1e-12);
+            CHECK(W("FK: acceleration", rel_error(k.a[i], kr.bodies[i].acceleration)) < 1e-12);
         }
-        CHECK(rel_error(ch::rnea(m, q, qd, qdd), fs::rnea(ref, q_ref, qd_ref, qdd_ref)) < 1e-12);
-        CHECK(rel_error(ch::crba(m, q), fs::crba(ref, q_ref)) < 1e-12);
+        const auto frames = ctga::test::urdf::all_frames(m, k);
+        for (std::size_t j = 0; j < robot.frames.size(); ++j) {
+            INFO("frame " << robot.frame_names[j]);
+            const fs::pose p = fs::frame_pose(ref, q_ref, robot.frames[j]);
+            CHECK(W("frame pose", pose_error(frames.pose[frame_of[j]], p.rotation, p.origin)) < 1e-12);
+            for (std::size_t r = 0; r < 3; ++r) {
+                INFO(ctga::test::urdf::reference_name(r));
+                CHECK(W("frame Jacobian", rel(frames.jacobian[frame_of[j]][r], fs::frame_jacobian(ref, q_ref, robot.frames[j], fs_reference[r]))) <
+                      1e-12);
+            }
+        }
+        CHECK(W("RNEA", rel_error(ch::rnea(m, q, qd, qdd), fs::rnea(ref, q_ref, qd_ref, qdd_ref))) < 1e-12);
+        CHECK(W("CRBA", rel_error(ch::crba(m, q), fs::crba(ref, q_ref))) < 1e-12);
+        CHECK(W("ABA", rel_error(ch::aba(m, q, qd, tau), fs::aba(ref, q_ref, qd_ref, tau_ref))) < 1e-12);
     }
 }
 
@@ -220,51 +265,92 @@ void compare_dynamics(const ch::model<Tree>& m, const fs::model& ref, std::uint6
 template <class Tree>
 void compare_float(const ch::model<Tree, double>& md, const ch::model<Tree, float>& mf) {
     const auto close = [](double a, float b) { return std::abs(a - static_cast<double>(b)) <= 1e-6 * std::max(1.0, std::abs(a)); };
+    const auto close_map = [&](const ctga::motor_map<double>& d, const ctga::motor_map<float>& f) {
+        bool ok = true;
+        for (std::size_t r = 0; r < 3; ++r) {
+            ok = ok && close(d.t[r], f.t[r]);
+            for (std::size_t c = 0; c < 3; ++c) ok = ok && close(d.R[r][c], f.R[r][c]);
+        }
+        return ok;
+    };
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         ([&] {
             INFO("body " << I);
             const auto& d = md.template link<I>();
             const auto& f = mf.template link<I>();
+            CHECK(close_map(d.placement, f.placement));
             for (std::size_t r = 0; r < 3; ++r) {
-                CHECK(close(d.placement.t[r], f.placement.t[r]));
                 CHECK(close(d.inertia.first_moment()[r], f.inertia.first_moment()[r]));
-                for (std::size_t c = 0; c < 3; ++c) {
-                    CHECK(close(d.placement.R[r][c], f.placement.R[r][c]));
-                    CHECK(close(d.inertia.inertia_o()[r][c], f.inertia.inertia_o()[r][c]));
-                }
+                for (std::size_t c = 0; c < 3; ++c) CHECK(close(d.inertia.inertia_o()[r][c], f.inertia.inertia_o()[r][c]));
             }
             CHECK(close(d.inertia.mass(), f.inertia.mass()));
         }(), ...);
     }(std::make_index_sequence<Tree::size>{});
+    for (std::size_t k = 0; k < Tree::frame_count; ++k) {
+        INFO("frame " << Tree::frame_names[k]);
+        CHECK(close_map(md.frames[k], mf.frames[k]));
+    }
 }
 
-// The tree types the URDF files describe: joint types from the axes, bodies depth first.
+// The tree types the URDF files describe: joint types from the axes, bodies depth first, then a
+// frame per link, depth first from the root.
+template <ctga::fixed_string N, int B>
+using FF = ch::fixed_frame<N, B>;
 using arm7_expected = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_y>, ch::link<1, ch::revolute_z>,
                                ch::link<2, ch::revolute_y>, ch::link<3, ch::revolute_z>, ch::link<4, ch::revolute_y>,
-                               ch::link<5, ch::revolute_about>, ch::link<6, ch::fixed>>;
+                               ch::link<5, ch::revolute_about>,  // the tool merged into link7's body
+                               FF<"base_link", -1>, FF<"link1", 0>, FF<"link2", 1>, FF<"link3", 2>, FF<"link4", 3>, FF<"link5", 4>,
+                               FF<"link6", 5>, FF<"link7", 6>, FF<"tool", 6>>;
 static_assert(std::is_same_v<arm7::tree, arm7_expected>);
+using arm7_kept_expected = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_y>, ch::link<1, ch::revolute_z>,
+                                    ch::link<2, ch::revolute_y>, ch::link<3, ch::revolute_z>, ch::link<4, ch::revolute_y>,
+                                    ch::link<5, ch::revolute_about>, ch::link<6, ch::fixed>,  //
+                                    FF<"base_link", -1>, FF<"link1", 0>, FF<"link2", 1>, FF<"link3", 2>, FF<"link4", 3>,
+                                    FF<"link5", 4>, FF<"link6", 5>, FF<"link7", 6>, FF<"tool", 7>>;
+static_assert(std::is_same_v<arm7_kept::tree, arm7_kept_expected>);
 using quadruped_expected =
-    ch::tree<ch::link<-1, ch::floating>,                                                   //
-             ch::link<0, ch::revolute_x>, ch::link<1, ch::revolute_y>, ch::link<2, ch::revolute_y>, ch::link<3, ch::fixed>,  //
-             ch::link<0, ch::revolute_x>, ch::link<5, ch::revolute_y>, ch::link<6, ch::revolute_y>, ch::link<7, ch::fixed>,  //
-             ch::link<0, ch::revolute_x>, ch::link<9, ch::revolute_y>, ch::link<10, ch::revolute_y>, ch::link<11, ch::fixed>,  //
-             ch::link<0, ch::revolute_x>, ch::link<13, ch::revolute_y>, ch::link<14, ch::revolute_y>, ch::link<15, ch::fixed>>;
+    ch::tree<ch::link<-1, ch::floating>,                                                                      //
+             ch::link<0, ch::revolute_x>, ch::link<1, ch::revolute_y>, ch::link<2, ch::revolute_y>,          // FL
+             ch::link<0, ch::revolute_x>, ch::link<4, ch::revolute_y>, ch::link<5, ch::revolute_y>,          // FR
+             ch::link<0, ch::revolute_x>, ch::link<7, ch::revolute_y>, ch::link<8, ch::revolute_y>,          // RL
+             ch::link<0, ch::revolute_x>, ch::link<10, ch::revolute_y>, ch::link<11, ch::revolute_y>,        // RR
+             FF<"trunk", 0>,                                                                                   //
+             FF<"FL_hip", 1>, FF<"FL_thigh", 2>, FF<"FL_calf", 3>, FF<"FL_foot", 3>,                              //
+             FF<"FR_hip", 4>, FF<"FR_thigh", 5>, FF<"FR_calf", 6>, FF<"FR_foot", 6>,                              //
+             FF<"RL_hip", 7>, FF<"RL_thigh", 8>, FF<"RL_calf", 9>, FF<"RL_foot", 9>,                              //
+             FF<"RR_hip", 10>, FF<"RR_thigh", 11>, FF<"RR_calf", 12>, FF<"RR_foot", 12>>;
 static_assert(std::is_same_v<quadruped::tree, quadruped_expected>);
-static_assert(arm7::tree::nq == 7 && arm7::tree::nv == 7);
+using quadruped_kept_expected =
+    ch::tree<ch::link<-1, ch::floating>,                                                                                   //
+             ch::link<0, ch::revolute_x>, ch::link<1, ch::revolute_y>, ch::link<2, ch::revolute_y>, ch::link<3, ch::fixed>,     //
+             ch::link<0, ch::revolute_x>, ch::link<5, ch::revolute_y>, ch::link<6, ch::revolute_y>, ch::link<7, ch::fixed>,     //
+             ch::link<0, ch::revolute_x>, ch::link<9, ch::revolute_y>, ch::link<10, ch::revolute_y>, ch::link<11, ch::fixed>,   //
+             ch::link<0, ch::revolute_x>, ch::link<13, ch::revolute_y>, ch::link<14, ch::revolute_y>, ch::link<15, ch::fixed>,  //
+             FF<"trunk", 0>,                                                                                                //
+             FF<"FL_hip", 1>, FF<"FL_thigh", 2>, FF<"FL_calf", 3>, FF<"FL_foot", 4>,                                           //
+             FF<"FR_hip", 5>, FF<"FR_thigh", 6>, FF<"FR_calf", 7>, FF<"FR_foot", 8>,                                           //
+             FF<"RL_hip", 9>, FF<"RL_thigh", 10>, FF<"RL_calf", 11>, FF<"RL_foot", 12>,                                        //
+             FF<"RR_hip", 13>, FF<"RR_thigh", 14>, FF<"RR_calf", 15>, FF<"RR_foot", 16>>;
+static_assert(std::is_same_v<quadruped_kept::tree, quadruped_kept_expected>);
+static_assert(arm7::tree::nq == 7 && arm7::tree::nv == 7 && arm7_kept::tree::nq == 7 && arm7_kept::tree::nv == 7);
 static_assert(quadruped::tree::nq == 8 + 12 && quadruped::tree::nv == 6 + 12);
+static_assert(quadruped_kept::tree::nq == 8 + 12 && quadruped_kept::tree::nv == 6 + 12);
+#if CTGA_TEST_PART_HOLDS(0)
 // make_model is a constant expression (ctga::rotation's cos and sin are ctga::math's, which are
 // constexpr with g++ and Clang)
 static_assert(arm7::make_model<double>() && quadruped::make_model<float>());
+#endif
 
 }  // namespace
 
+#if CTGA_TEST_PART_HOLDS(0)
 TEST_CASE("urdf: the motor convention the generator relies on: map_of(rigid_motion(make_translator(t), make_rotor(θ, u))) is (Rot(u, θ), t)") {
     // a right-handed quarter turn about z takes x to y
     const ctga::motor_map<double> G = ctga::map_of(ctga::rigid_motion(ctga::make_translator(1.0, 2.0, 3.0),
                                                                       ctga::make_rotor(std::acos(0.0), 0.0, 0.0, 1.0)));
     fs::mat3 quarter_z;
     quarter_z << 0, -1, 0, 1, 0, 0, 0, 0, 1;
-    CHECK(max_abs_diff(G, quarter_z, fs::vec3(1, 2, 3)) < 1e-15);
+    CHECK(pose_error(G, quarter_z, fs::vec3(1, 2, 3)) < 1e-15);
     // and in general Rodrigues' rotation R = 1 + sin θ û + (1 − cos θ) û² (right hand), t as given
     std::mt19937_64 rng(7);
     for (int n = 0; n < 20; ++n) {
@@ -272,7 +358,7 @@ TEST_CASE("urdf: the motor convention the generator relies on: map_of(rigid_moti
         const double theta = fs::uniform(rng, -4, 4);
         const ctga::motor_map<double> H =
             ctga::map_of(ctga::rigid_motion(ctga::make_translator(t[0], t[1], t[2]), ctga::make_rotor(theta, u[0], u[1], u[2])));
-        CHECK(max_abs_diff(H, fs::axis_angle(u, theta), t) < 1e-14);
+        CHECK(pose_error(H, fs::axis_angle(u, theta), t) < 1e-14);
     }
     // URDF's rpy as written here: roll about x first, then pitch about y, then yaw about z (fixed axes)
     fs::mat3 roll90;
@@ -284,22 +370,50 @@ TEST_CASE("urdf: the motor convention the generator relies on: map_of(rigid_moti
               .maxCoeff() < 1e-15);
 }
 
-TEST_CASE("urdf: arm7 (a 7-dof arm, fixed base) agrees with the reference built from its URDF numbers") {
+TEST_CASE("urdf: arm7 --keep-fixed (every link a body) agrees with the reference built from its URDF numbers") {
+    const auto m = arm7_kept::make_model<double>();
+    REQUIRE(m);
+    const reference_robot ref = reference_robot_of(arm7_urdf, arm7_links, true);
+    compare_parameters(*m, ref.model);
+    compare_dynamics(*m, ref, 101, 8);
+    ctga::test::urdf::print_worst("urdf: arm7_kept");
+}
+
+TEST_CASE("urdf: arm7 (the tool merged into link7's body) agrees with the reference's merge_fixed of its URDF numbers") {
     const auto m = arm7::make_model<double>();
     REQUIRE(m);
-    const fs::model ref = reference_of(arm7_urdf);
-    compare_parameters(*m, ref);
-    compare_dynamics(*m, ref, 101, 8);
+    const reference_robot ref = merged(reference_robot_of(arm7_urdf, arm7_links, true));
+    REQUIRE(ref.model.size() == 7);
+    compare_parameters(*m, ref.model);
+    compare_dynamics(*m, ref, 102, 8);
+    ctga::test::urdf::print_worst("urdf: arm7");
 }
 
-TEST_CASE("urdf: quadruped (floating base, four legs) agrees with the reference built from its URDF numbers") {
+#endif
+
+#if CTGA_TEST_PART_HOLDS(1)
+TEST_CASE("urdf: quadruped --keep-fixed (floating base, four legs, feet as bodies) agrees with the reference") {
+    const auto m = quadruped_kept::make_model<double>();
+    REQUIRE(m);
+    const reference_robot ref = reference_robot_of(quadruped_urdf, quadruped_links, false);
+    compare_parameters(*m, ref.model);
+    compare_dynamics(*m, ref, 201, 8);
+    ctga::test::urdf::print_worst("urdf: quadruped_kept");
+}
+
+TEST_CASE("urdf: quadruped (feet merged into the calves) agrees with the reference's merge_fixed") {
     const auto m = quadruped::make_model<double>();
     REQUIRE(m);
-    const fs::model ref = reference_of(quadruped_urdf);
-    compare_parameters(*m, ref);
+    const reference_robot ref = merged(reference_robot_of(quadruped_urdf, quadruped_links, false));
+    REQUIRE(ref.model.size() == 13);
+    compare_parameters(*m, ref.model);
     compare_dynamics(*m, ref, 202, 8);
+    ctga::test::urdf::print_worst("urdf: quadruped");
 }
 
+#endif
+
+#if CTGA_TEST_PART_HOLDS(0)
 TEST_CASE("urdf: the float models build and equal the double ones to float precision") {
     const auto ad = arm7::make_model<double>();
     const auto af = arm7::make_model<float>();
@@ -314,21 +428,46 @@ TEST_CASE("urdf: the float models build and equal the double ones to float preci
     static_assert(std::is_same_v<decltype(af), const ctga::checked<ch::model<arm7::tree, float>>>);
 }
 
-TEST_CASE("urdf: body and joint names in body order") {
+TEST_CASE("urdf: body, joint and frame names") {
     using sv = std::string_view;
-    const std::array<sv, 8> arm_bodies{"link1", "link2", "link3", "link4", "link5", "link6", "link7", "tool"};
-    const std::array<sv, 8> arm_joints{"joint1", "joint2", "joint3", "joint4", "joint5", "joint6", "joint7", "tool_joint"};
+    // bodies: the moving links (the fixed ones merged); frames: every URDF link, depth first
+    const std::array<sv, 7> arm_bodies{"link1", "link2", "link3", "link4", "link5", "link6", "link7"};
+    const std::array<sv, 7> arm_joints{"joint1", "joint2", "joint3", "joint4", "joint5", "joint6", "joint7"};
+    const std::array<sv, 9> arm_frames{"base_link", "link1", "link2", "link3", "link4", "link5", "link6", "link7", "tool"};
     CHECK(arm7::body_names == arm_bodies);
     CHECK(arm7::joint_names == arm_joints);
-    const std::array<sv, 17> quad_bodies{"trunk",   "FL_hip",  "FL_thigh", "FL_calf", "FL_foot", "FR_hip",
-                                         "FR_thigh", "FR_calf", "FR_foot",  "RL_hip",  "RL_thigh", "RL_calf",
-                                         "RL_foot", "RR_hip",  "RR_thigh", "RR_calf", "RR_foot"};
-    const std::array<sv, 17> quad_joints{"floating_base",  "FL_hip_joint",   "FL_thigh_joint", "FL_calf_joint",
-                                         "FL_foot_joint",  "FR_hip_joint",   "FR_thigh_joint", "FR_calf_joint",
-                                         "FR_foot_joint",  "RL_hip_joint",   "RL_thigh_joint", "RL_calf_joint",
-                                         "RL_foot_joint",  "RR_hip_joint",   "RR_thigh_joint", "RR_calf_joint",
-                                         "RR_foot_joint"};
+    CHECK(arm7::tree::frame_names == arm_frames);
+    const std::array<sv, 8> arm_kept_bodies{"link1", "link2", "link3", "link4", "link5", "link6", "link7", "tool"};
+    const std::array<sv, 8> arm_kept_joints{"joint1", "joint2", "joint3", "joint4", "joint5", "joint6", "joint7", "tool_joint"};
+    CHECK(arm7_kept::body_names == arm_kept_bodies);
+    CHECK(arm7_kept::joint_names == arm_kept_joints);
+    CHECK(arm7_kept::tree::frame_names == arm_frames);
+
+    // the floating base joint is named after the root link
+    const std::array<sv, 13> quad_bodies{"trunk",    "FL_hip",  "FL_thigh", "FL_calf", "FR_hip",   "FR_thigh", "FR_calf",
+                                         "RL_hip",   "RL_thigh", "RL_calf", "RR_hip",  "RR_thigh", "RR_calf"};
+    const std::array<sv, 13> quad_joints{"trunk",          "FL_hip_joint",   "FL_thigh_joint", "FL_calf_joint", "FR_hip_joint",
+                                         "FR_thigh_joint", "FR_calf_joint",  "RL_hip_joint",   "RL_thigh_joint", "RL_calf_joint",
+                                         "RR_hip_joint",   "RR_thigh_joint", "RR_calf_joint"};
+    const std::array<sv, 17> quad_frames{"trunk",    "FL_hip",  "FL_thigh", "FL_calf",  "FL_foot", "FR_hip",
+                                         "FR_thigh", "FR_calf", "FR_foot",  "RL_hip",   "RL_thigh", "RL_calf",
+                                         "RL_foot",  "RR_hip",  "RR_thigh", "RR_calf",  "RR_foot"};
     CHECK(quadruped::body_names == quad_bodies);
     CHECK(quadruped::joint_names == quad_joints);
-    static_assert(arm7::body_names[7] == "tool" && quadruped::joint_names[0] == "floating_base");
+    CHECK(quadruped::tree::frame_names == quad_frames);
+    const std::array<sv, 17> quad_kept_bodies{"trunk",    "FL_hip",  "FL_thigh", "FL_calf",  "FL_foot", "FR_hip",
+                                              "FR_thigh", "FR_calf", "FR_foot",  "RL_hip",   "RL_thigh", "RL_calf",
+                                              "RL_foot",  "RR_hip",  "RR_thigh", "RR_calf",  "RR_foot"};
+    const std::array<sv, 17> quad_kept_joints{"trunk",          "FL_hip_joint",   "FL_thigh_joint", "FL_calf_joint",
+                                              "FL_foot_joint",  "FR_hip_joint",   "FR_thigh_joint", "FR_calf_joint",
+                                              "FR_foot_joint",  "RL_hip_joint",   "RL_thigh_joint", "RL_calf_joint",
+                                              "RL_foot_joint",  "RR_hip_joint",   "RR_thigh_joint", "RR_calf_joint",
+                                              "RR_foot_joint"};
+    CHECK(quadruped_kept::body_names == quad_kept_bodies);
+    CHECK(quadruped_kept::joint_names == quad_kept_joints);
+    CHECK(quadruped_kept::tree::frame_names == quad_frames);
+    static_assert(arm7_kept::body_names[7] == "tool" && arm7::tree::frame_names[8] == "tool");
+    static_assert(quadruped::joint_names[0] == "trunk" && quadruped_kept::joint_names[0] == "trunk");
+    static_assert(ch::frame_index<quadruped::tree, "RR_foot">() == 16 && quadruped::tree::frame_body[16] == 12);
 }
+#endif

@@ -60,7 +60,7 @@ struct frame_on<Tree, std::integral_constant<std::size_t, I>> {
 template <class Tree, fixed_string Name>
 struct frame_on<Tree, frame_name<Name>> {
     static constexpr std::size_t index = frame_index<Tree, Name>();
-    static constexpr int body = Tree::frame_body[index];
+    static constexpr int body = index < Tree::frame_count ? Tree::frame_body[index] : -1;  // (no second error)
     static constexpr bool placed = true;
 };
 template <class Tree, std::size_t K>

@@ -254,9 +254,34 @@ CHAINS_CASE(0, "1 to 7 bodies") {
 #endif
 #if CTGA_TEST_PART_HOLDS(1)
 CHAINS_CASE(1, "12 bodies") { compare<random_structure<5, 12, false>::type>(15, 10); }
+// A chain whose bodies repeat (revolute y, prismatic x, revolute about an axis) hanging each from
+// the previous: one run of four repeats, executed as a loop (chains/runs.hpp).
+using repeating_chain = ch::tree<ch::link<-1, ch::revolute_z>,                                                  //
+                                 ch::link<0, ch::revolute_y>, ch::link<1, ch::prismatic_x>, ch::link<2, ch::revolute_about>,  //
+                                 ch::link<3, ch::revolute_y>, ch::link<4, ch::prismatic_x>, ch::link<5, ch::revolute_about>,  //
+                                 ch::link<6, ch::revolute_y>, ch::link<7, ch::prismatic_x>, ch::link<8, ch::revolute_about>,  //
+                                 ch::link<9, ch::revolute_y>, ch::link<10, ch::prismatic_x>, ch::link<11, ch::revolute_about>,
+                                 ch::link<12, ch::revolute_x>>;
+static_assert(ch::run_detail::plan<repeating_chain>::count == 3 && ch::run_detail::plan<repeating_chain>::at(1).repeats == 4,
+              "the repeating chain is body 0, a run of 4 × 3 bodies, body 13");
+CHAINS_CASE(1, "a chain of repeated bodies (a run)") { compare<repeating_chain>(19, 10); }
 #endif
 #if CTGA_TEST_PART_HOLDS(2)
 CHAINS_CASE(2, "12 bodies on a floating base") { compare<random_structure<6, 12, true>::type>(16, 10); }
+// Three legs on a floating trunk, each hanging from the trunk (absolute) and along itself
+// (relative), with a fixed link at the end, and a last body that breaks the pattern: a run of
+// three repeats of four bodies.
+using repeating_legs = ch::tree<ch::link<-1, ch::floating>,                                                       //
+                                ch::link<0, ch::revolute_x>, ch::link<1, ch::revolute_y>, ch::link<2, ch::prismatic_along>,  //
+                                ch::link<3, ch::fixed>,                                                           //
+                                ch::link<0, ch::revolute_x>, ch::link<5, ch::revolute_y>, ch::link<6, ch::prismatic_along>,  //
+                                ch::link<7, ch::fixed>,                                                           //
+                                ch::link<0, ch::revolute_x>, ch::link<9, ch::revolute_y>, ch::link<10, ch::prismatic_along>,  //
+                                ch::link<11, ch::fixed>, ch::link<0, ch::revolute_about>>;
+static_assert(ch::run_detail::plan<repeating_legs>::count == 3 && ch::run_detail::plan<repeating_legs>::at(1).repeats == 3 &&
+                  ch::run_detail::plan<repeating_legs>::at(1).length == 4,
+              "the legs are body 0, a run of 3 × 4 bodies, body 13");
+CHAINS_CASE(2, "legs of repeated bodies on a floating base (a run)") { compare<repeating_legs>(20, 10); }
 #endif
 #if CTGA_TEST_PART_HOLDS(3)
 CHAINS_CASE(3, "30 bodies: FK, RNEA, CRBA, energies") {

@@ -18,6 +18,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "ctga/chains/crba.hpp"
@@ -70,79 +71,79 @@ constexpr joint_vector<Tree, T> articulated_body(const model<Tree, T>& m, const 
                                                  const body_wrenches<Tree, T>* f_ext) noexcept {
     kinematics<Tree, T> k{uninitialized};
     forward_pass<pass::velocities, false>(k, m, q, qd.data(), static_cast<const T*>(nullptr), vec3<T>{});
-    // N^A_i = N_i, p^A_i = v_i ×* (N_i v_i) − f_ext,i: each array built element by element
+    // N^A_i = N_i (built element by element), p^A_i = v_i ×* (N_i v_i) − f_ext,i
     std::array<articulated_inertia<T>, Tree::size> NA = [&]<std::size_t... I>(std::index_sequence<I...>) {
         return std::array<articulated_inertia<T>, Tree::size>{articulated_inertia_of(m.template link<I>().inertia)...};
     }(std::make_index_sequence<Tree::size>{});
-    std::array<coscrew<T>, Tree::size> pA = [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return std::array<coscrew<T>, Tree::size>{coscrew<T>(coadjoint(k.v[I], momentum(m.template link<I>().inertia, k.v[I])))...};
-    }(std::make_index_sequence<Tree::size>{});
+    auto pA = uninitialized_array<coscrew<T>, Tree::size>();
+    each_body(m, [&](const auto& b) {
+        const auto& N = b.link(m).inertia;
+        pA[b.i] = coadjoint(k.v[b.i], momentum(N, k.v[b.i]));
+    });
     if (f_ext)
         for (std::size_t i = 0; i < Tree::size; ++i) pA[i] = pA[i] - (*f_ext)[i];
     // c_i = v_i × S_i q̇_i in the bracket's own sparse type: four blades for an axis joint (nv = 1, 6 only)
-    const auto bias = [&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        using J = typename Tree::template joint_at<i>;
-        return eval(bracket.formula(k.v[i], joint_screw<J>(m.template link<i>().joint, qd.data() + Tree::v_offset[i])));
+    const auto bias = [&](const auto& b) {
+        using J = typename std::remove_cvref_t<decltype(b)>::joint;
+        return eval(bracket.formula(k.v[b.i], joint_screw<J>(b.link(m).joint, qd.data() + b.v_own)));
     };
     // written for the 1-dof joints, read for them only
     auto U = uninitialized_array<coscrew<T>, Tree::size>();  // N^A S
     std::array<T, Tree::size> D_inverse;                     // 1 / U(S)
     std::array<T, Tree::size> u;                             // τ − p^A(S)
-    backward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        using J = typename Tree::template joint_at<i>;
-        const auto& L = m.template link<i>();
+    each_body_backward(m, [&](const auto& b) {
+        using B = std::remove_cvref_t<decltype(b)>;
+        using J = typename B::joint;
+        const std::size_t i = b.i;
+        const auto& L = b.link(m);
         if constexpr (J::nv == 1) {
             const auto S = J::template subspace<0, T>(L.joint);
             U[i] = momentum(NA[i], S);
             D_inverse[i] = T(1) / pairing(U[i], S);
-            u[i] = tau[Tree::v_offset[i]] - pairing(pA[i], S);
-            if constexpr (p >= 0) {
+            u[i] = tau[b.v_own] - pairing(pA[i], S);
+            if constexpr (!B::root) {
                 // an axis joint's S is one screw component: N^a has a zero row and column there
                 constexpr std::size_t null = null_component<J>();
                 const articulated_inertia<T> Na = minus_joint<null>(NA[i], U[i], D_inverse[i]);
-                const coscrew<T> pa = pA[i] + momentum(Na, bias(body)) + U[i] * (u[i] * D_inverse[i]);
-                NA[p] = NA[p] + transform<null>(k.X[i], Na);
-                pA[p] = pA[p] + transform(k.X[i], pa);
+                const coscrew<T> pa = pA[i] + momentum(Na, bias(b)) + U[i] * (u[i] * D_inverse[i]);
+                NA[b.p] = NA[b.p] + transform<null>(k.X[i], Na);
+                pA[b.p] = pA[b.p] + transform(k.X[i], pa);
             }
         } else if constexpr (J::nv == 0) {
-            if constexpr (p >= 0) {
-                NA[p] = NA[p] + transform(k.X[i], NA[i]);
-                pA[p] = pA[p] + transform(k.X[i], pA[i]);
+            if constexpr (!B::root) {
+                NA[b.p] = NA[b.p] + transform(k.X[i], NA[i]);
+                pA[b.p] = pA[b.p] + transform(k.X[i], pA[i]);
             }
         } else {
             static_assert(J::nv == 6, "ctga::chains::aba: a joint has 0, 1 or 6 degrees of freedom");
-            if constexpr (p >= 0) {
-                constexpr std::size_t o = Tree::v_offset[i];
+            if constexpr (!B::root) {
+                const std::size_t o = b.v_own;
                 const coscrew<T> tau_i{tau[o], tau[o + 1], tau[o + 2], tau[o + 3], tau[o + 4], tau[o + 5]};
-                pA[p] = pA[p] + transform(k.X[i], tau_i);
+                pA[b.p] = pA[b.p] + transform(k.X[i], tau_i);
             }
         }
     });
     joint_vector<Tree, T> qdd;  // every number written
     auto a = uninitialized_array<screw<T>, Tree::size>();
     const vec3<T> a_world = minus(m.gravity);
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        constexpr std::size_t o = Tree::v_offset[i];
-        using J = typename Tree::template joint_at<i>;
-        const auto& L = m.template link<i>();
+    each_body(m, [&](const auto& b) {
+        using B = std::remove_cvref_t<decltype(b)>;
+        using J = typename B::joint;
+        const std::size_t i = b.i, o = b.v_own;
+        const auto& L = b.link(m);
         screw<T> a_parent;  // X_i⁻¹ a_λ
-        if constexpr (p < 0) a_parent = world_acceleration(k.X[i], a_world);
-        else a_parent = transform_inverse(k.X[i], a[p]);
+        if constexpr (B::root) a_parent = world_acceleration(k.X[i], a_world);
+        else a_parent = transform_inverse(k.X[i], a[b.p]);
         if constexpr (J::nv == 0) {
             a[i] = a_parent;
         } else if constexpr (J::nv == 1) {
-            const screw<T> a1 = a_parent + bias(body);
+            const screw<T> a1 = a_parent + bias(b);
             qdd[o] = (u[i] - pairing(U[i], a1)) * D_inverse[i];
             a[i] = a1 + J::template subspace<0, T>(L.joint) * qdd[o];
         } else {
             const coscrew<T> tau_i{tau[o], tau[o + 1], tau[o + 2], tau[o + 3], tau[o + 4], tau[o + 5]};
             a[i] = solve(NA[i], coscrew<T>(tau_i - pA[i]));
-            const screw<T> d = a[i] - (a_parent + bias(body));
+            const screw<T> d = a[i] - (a_parent + bias(b));
             for (std::size_t r = 0; r < 6; ++r) qdd[o + r] = d[r];
         }
     });

@@ -23,6 +23,7 @@
 #include <utility>
 
 #include "ctga/chains/joints.hpp"
+#include "ctga/chains/runs.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/linear3.hpp"
@@ -102,8 +103,9 @@ constexpr vec3<T> minus(const vec3<T>& g) noexcept {
 
 enum class pass { poses, velocities, accelerations };
 
-// The forward pass of §4.1/§5.3 into k: maps, world poses (when Poses), velocities and
-// accelerations (as asked), then then(body, k) while the body's numbers are at hand (RNEA's
+// The forward pass of §4.1/§5.3 into k, body by body (each_body: a run of repeated bodies is
+// one loop, runs.hpp): maps, world poses (when Poses), velocities and accelerations (as asked),
+// then then(body, k) while the body's numbers are at hand (RNEA's
 // forces; the body's map k.X[i] is stored only after it). RNEA and ABA need no world poses:
 // only each body's map in its parent. Every number asked for is written before it is read, so
 // k may start uninitialized.
@@ -114,42 +116,42 @@ struct no_body_work {
 template <pass What, bool Poses, class Tree, class T, class Then = no_body_work>
 constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
                             const T* qdd, const vec3<T>& a_world, Then&& then = {}) noexcept {
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        using J = typename Tree::template joint_at<i>;
-        const auto& L = m.template link<i>();
-        const motor_map<T> X = joint_map<i>(m, q);  // used from here, stored in k.X after the body's work
+    each_body(m, [&](const auto& b) {
+        using B = std::remove_cvref_t<decltype(b)>;
+        using J = typename B::joint;
+        const std::size_t i = b.i;
+        const auto& L = b.link(m);
+        const motor_map<T> X = J::motion(L.placement, L.joint, q.data() + b.q_src);  // stored in k.X after the body's work
         if constexpr (!Poses) {
-        } else if constexpr (p < 0) {
+        } else if constexpr (B::root) {
             k.pose[i] = X;
         } else {
-            k.pose[i] = compose(k.pose[p], X);
+            k.pose[i] = compose(k.pose[b.p], X);
         }
         if constexpr (What != pass::poses) {
-            constexpr std::size_t o = Tree::v_offset[Tree::reads_from[i]];
+            const std::size_t o = b.v_src;
             if constexpr (!moves<J>) {
-                if constexpr (p < 0) {
+                if constexpr (B::root) {
                     k.v[i] = screw<T>{};
                     if constexpr (What == pass::accelerations) k.a[i] = world_acceleration(X, a_world);
                 } else {
-                    k.v[i] = transform_inverse(X, k.v[p]);
-                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, k.a[p]);
+                    k.v[i] = transform_inverse(X, k.v[b.p]);
+                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, k.a[b.p]);
                 }
             } else {
                 const auto vJ = joint_screw<J>(L.joint, qd + o);
-                if constexpr (p < 0) {
+                if constexpr (B::root) {
                     k.v[i] = vJ;  // the world does not move
                     if constexpr (What == pass::accelerations)
                         k.a[i] = world_acceleration(X, a_world) + joint_screw<J>(L.joint, qdd + o);
                 } else {
-                    k.v[i] = transform_inverse(X, k.v[p]) + vJ;
+                    k.v[i] = transform_inverse(X, k.v[b.p]) + vJ;
                     if constexpr (What == pass::accelerations)
-                        k.a[i] = transform_inverse(X, k.a[p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
+                        k.a[i] = transform_inverse(X, k.a[b.p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
                 }
             }
         }
-        then(body, k);
+        then(b, k);
         // last: a copy of X read while its parts still sit in the store buffer stalls store forwarding
         k.X[i] = X;
     });

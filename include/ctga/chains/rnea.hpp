@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 #include "ctga/chains/passes.hpp"
@@ -27,24 +28,24 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
     auto f = uninitialized_array<coscrew<T>, Tree::size>();
     kinematics<Tree, T> k{uninitialized};
     forward_pass<pass::accelerations, false>(
-        k, m, q, qd.data(), qdd.data(), minus(m.gravity), [&](auto body, const kinematics<Tree, T>& kb) {
-            constexpr std::size_t i = decltype(body)::value;
-            const auto& N = m.template link<i>().inertia;
+        k, m, q, qd.data(), qdd.data(), minus(m.gravity), [&](const auto& body, const kinematics<Tree, T>& kb) {
+            const std::size_t i = body.i;
+            const auto& N = body.link(m).inertia;
             // f_i = N a_i + v_i ×* (N v_i) − f_ext
             f[i] = momentum(N, kb.a[i]) + coadjoint(kb.v[i], momentum(N, kb.v[i]));
             if (f_ext) f[i] = f[i] - (*f_ext)[i];
         });
     joint_vector<Tree, T> tau{};
-    backward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        using J = typename Tree::template joint_at<i>;
-        const auto& L = m.template link<i>();
+    each_body_backward(m, [&](const auto& body) {
+        using B = std::remove_cvref_t<decltype(body)>;
+        using J = typename B::joint;
+        const std::size_t i = body.i;
+        const auto& L = body.link(m);
         if constexpr (J::nv > 0)
             [&]<std::size_t... K>(std::index_sequence<K...>) {
-                ((tau[Tree::v_offset[i] + K] = pairing(f[i], J::template subspace<K, T>(L.joint))), ...);
+                ((tau[body.v_own + K] = pairing(f[i], J::template subspace<K, T>(L.joint))), ...);
             }(std::make_index_sequence<J::nv>{});
-        if constexpr (p >= 0) f[p] = f[p] + transform(k.X[i], f[i]);
+        if constexpr (!B::root) f[body.p] = f[body.p] + transform(k.X[i], f[i]);
     });
     // a mimic joint's torque r f_i(S_i) goes to its master (τ = Gᵀ τ_all, joints.hpp); f_i is final
     // once body i has passed it on

@@ -28,6 +28,7 @@
 #include <Eigen/Dense>
 
 #include "support/catch.hpp"
+#include "support/worst.hpp"
 #include "support/featherstone.hpp"
 #include "support/random_tree.hpp"
 
@@ -91,23 +92,7 @@ VectorXd solve_spd(const MatrixXd& H, const VectorXd& b) {
     return x;
 }
 
-// The worst error of each named measure within one test case, printed when it ends.
-struct worst {
-    std::string title;
-    std::map<std::string, double> seen;
-    explicit worst(std::string t) : title(std::move(t)) {}
-    double operator()(const std::string& what, double err) {
-        double& w = seen[what];
-        w = std::max(w, err);
-        return err;
-    }
-    ~worst() {
-        std::printf("%s: worst errors\n", title.c_str());
-        for (const auto& [what, err] : seen) std::printf("  %-58s %.3e\n", what.c_str(), err);
-    }
-    worst(const worst&) = delete;
-    worst& operator=(const worst&) = delete;
-};
+using ctga::test::worst;
 
 // (ω) from a skew matrix (its skew part)
 vec3 vee(const mat3& W) { return 0.5 * vec3(W(2, 1) - W(1, 2), W(0, 2) - W(2, 0), W(1, 0) - W(0, 1)); }

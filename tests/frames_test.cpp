@@ -50,6 +50,7 @@
 #include <ctga/chains/algorithms.hpp>
 
 #include "support/catch.hpp"
+#include "support/worst.hpp"
 #include "support/featherstone.hpp"
 #include "support/featherstone_frames.hpp"
 #include "support/parts.hpp"
@@ -197,23 +198,7 @@ inline double rel(const MatrixXd& x, const MatrixXd& y) {
     return (x - y).cwiseAbs().maxCoeff() / scale;
 }
 
-// the worst error of each measure, printed when the test case ends
-struct worst {
-    std::string title;
-    std::map<std::string, double> seen;
-    explicit worst(std::string t) : title(std::move(t)) {}
-    double operator()(const std::string& what, double err) {
-        double& w = seen[what];
-        w = std::max(w, err);
-        return err;
-    }
-    ~worst() {
-        std::printf("%s: worst errors\n", title.c_str());
-        for (const auto& [what, err] : seen) std::printf("  %-58s %.3e\n", what.c_str(), err);
-    }
-    worst(const worst&) = delete;
-    worst& operator=(const worst&) = delete;
-};
+using ctga::test::worst;
 
 constexpr ch::reference refs[] = {ch::reference::local, ch::reference::world, ch::reference::local_world_aligned};
 inline fs::reference ref_of(ch::reference r) {

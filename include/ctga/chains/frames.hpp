@@ -128,32 +128,23 @@ struct frame_pose_t {
 };
 inline constexpr frame_pose_t frame_pose{};
 
-// The frame's velocity screw (k: forward_kinematics(m, q, q̇)).
-struct frame_velocity_t {
+// The frame's velocity screw (k: forward_kinematics(m, q, q̇)), or its spatial acceleration: the
+// time derivative of the velocity screw's numbers in the same coordinates (k:
+// forward_kinematics(m, q, q̇, q̈); gravity not included). Moving a body's screw into a frame fixed
+// to it commutes with d/dt, so both are seen_from the same way; in local_world_aligned the
+// acceleration is local's in world axes, as Pinocchio's.
+template <bool Acceleration>
+struct frame_motion_t {
     template <class Tree, class T, class F>
     [[nodiscard]] constexpr screw<T> operator()(const model<Tree, T>& m, const kinematics<Tree, T>& k, F f,
                                                 reference r) const noexcept {
         constexpr int b = frame_detail::frame_on<Tree, F>::body;
         if constexpr (b < 0) return screw<T>{};
-        else return frame_detail::seen_from(m, k, f, k.v[b], r);
+        else return frame_detail::seen_from(m, k, f, Acceleration ? k.a[b] : k.v[b], r);
     }
 };
-inline constexpr frame_velocity_t frame_velocity{};
-
-// The frame's spatial acceleration, the time derivative of its velocity screw's numbers in the
-// same coordinates (k: forward_kinematics(m, q, q̇, q̈); gravity not included). Moving a body's
-// screw into a frame fixed to it commutes with d/dt, so it is seen_from like the velocity; in
-// local_world_aligned it is local's acceleration in world axes, as Pinocchio's.
-struct frame_acceleration_t {
-    template <class Tree, class T, class F>
-    [[nodiscard]] constexpr screw<T> operator()(const model<Tree, T>& m, const kinematics<Tree, T>& k, F f,
-                                                reference r) const noexcept {
-        constexpr int b = frame_detail::frame_on<Tree, F>::body;
-        if constexpr (b < 0) return screw<T>{};
-        else return frame_detail::seen_from(m, k, f, k.a[b], r);
-    }
-};
-inline constexpr frame_acceleration_t frame_acceleration{};
+inline constexpr frame_motion_t<false> frame_velocity{};
+inline constexpr frame_motion_t<true> frame_acceleration{};
 
 // The classical acceleration of the frame's origin, d²p/dt² = a_v + ω × v from the local (or
 // local_world_aligned) velocity and acceleration: in the frame's axes (local) or the world's

@@ -36,38 +36,41 @@ CTGA_ALWAYS_INLINE constexpr T dof_weight(const model<Tree, T>& m) noexcept {
 // H_all are added into H = Gᵀ H_all G with their weights: an ancestor's entry both ways round (H_all
 // is symmetric and only its lower part is computed), the column's own body's (Own) once, since
 // its columns give its whole block.
-template <std::size_t J, bool Own, class Tree, class T>
+// (The weight is passed in a tree with mimic joints only: the others' code has no trace of it.)
+template <std::size_t J, bool Own, class Tree, class T, class... Weight>
 CTGA_ALWAYS_INLINE constexpr void fill_rows(const model<Tree, T>& m, joint_matrix<Tree, T>& H, std::size_t col,
-                                            const T& w_col, const coscrew<T>& F) noexcept {
+                                            const coscrew<T>& F, const Weight&... w_col) noexcept {
     using Jt = typename Tree::template joint_at<J>;
     constexpr std::size_t n = is_mimic<Jt> ? 1 : Jt::nv;
-    [&]<std::size_t... L>(std::index_sequence<L...>) {
-        if constexpr (!Tree::has_mimic) {
+    if constexpr (!Tree::has_mimic) {
+        [&]<std::size_t... L>(std::index_sequence<L...>) {
             ((H[Tree::v_offset[J] + L][col] = H[col][Tree::v_offset[J] + L] =
                   pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
              ...);
-        } else {
-            const T w = w_col * dof_weight<J>(m);
-            const auto add = [&](std::size_t row, const T& x) {
-                H[row][col] += x;
-                if constexpr (!Own) H[col][row] += x;
-            };
+        }(std::make_index_sequence<n>{});
+    } else {
+        const T w = (w_col * ...) * dof_weight<J>(m);
+        const auto add = [&](std::size_t row, const T& x) {
+            H[row][col] += x;
+            if constexpr (!Own) H[col][row] += x;
+        };
+        [&]<std::size_t... L>(std::index_sequence<L...>) {
             (add(Tree::v_offset[Tree::reads_from[J]] + L, w * pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
              ...);
-        }
-    }(std::make_index_sequence<n>{});
+        }(std::make_index_sequence<n>{});
+    }
 }
 // F moved out of body `Child` into its parent's frame, and the parent's entries filled; then on up.
-template <std::size_t Child, class Tree, class T>
+template <std::size_t Child, class Tree, class T, class... Weight>
 CTGA_ALWAYS_INLINE constexpr void fill_ancestors(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
-                                                 joint_matrix<Tree, T>& H, std::size_t col, const T& w_col,
-                                                 const coscrew<T>& F) noexcept {
+                                                 joint_matrix<Tree, T>& H, std::size_t col, const coscrew<T>& F,
+                                                 const Weight&... w_col) noexcept {
     constexpr int p = Tree::parent[Child];
     if constexpr (p >= 0) {
         const coscrew<T> Fp = transform(X[Child], F);
         if constexpr (moves<typename Tree::template joint_at<static_cast<std::size_t>(p)>>)
-            fill_rows<static_cast<std::size_t>(p), false>(m, H, col, w_col, Fp);
-        fill_ancestors<static_cast<std::size_t>(p)>(m, X, H, col, w_col, Fp);
+            fill_rows<static_cast<std::size_t>(p), false>(m, H, col, Fp, w_col...);
+        fill_ancestors<static_cast<std::size_t>(p)>(m, X, H, col, Fp, w_col...);
     }
 }
 // Column K of body I's dofs, from F = N^c_I S_IK.
@@ -75,9 +78,14 @@ template <std::size_t I, std::size_t K, class Tree, class T>
 CTGA_ALWAYS_INLINE constexpr void crba_column(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
                                               joint_matrix<Tree, T>& H, const coscrew<T>& F) noexcept {
     const std::size_t col = Tree::v_offset[Tree::reads_from[I]] + K;
-    const T w = dof_weight<I>(m);
-    fill_rows<I, true>(m, H, col, w, F);
-    fill_ancestors<I>(m, X, H, col, w, F);
+    if constexpr (Tree::has_mimic) {
+        const T w = dof_weight<I>(m);
+        fill_rows<I, true>(m, H, col, F, w);
+        fill_ancestors<I>(m, X, H, col, F, w);
+    } else {
+        fill_rows<I, false>(m, H, col, F);  // (Own matters to the mimic sums only)
+        fill_ancestors<I>(m, X, H, col, F);
+    }
 }
 }  // namespace algorithm_detail
 

@@ -6,8 +6,9 @@
 #   (b2) bench/compile/arm7_dynamics.cpp  a 7-dof arm's RNEA, ABA and CRBA (ctga::chains)
 #   (b3) bench/compile/eom_jacobian.cpp   the exact Jacobian ∂ṡ/∂s of one body's equations of motion
 #   (b4) bench/compile/quadruped_frames.cpp  a quadruped from URDF (tests/data/legged.urdf, merged,
-#                                     26 frames): RNEA, ABA, CRBA, four feet's frame Jacobians and
-#                                     J̇, the centroidal momentum matrix; at -O2
+#                                     26 frames): RNEA, ABA, CRBA, four feet's frame Jacobians; at
+#                                     -O2; (b5) the same with J̇, the centre of mass and the
+#                                     centroidal momentum matrix
 #   (c) the heaviest test unit         only with --with-heaviest (about 30 s)
 #   (d) bench/compile/generators.cpp   one algebra of n generators and one geometric product of
 #                                     two general vectors, bivectors, even elements and general
@@ -126,6 +127,8 @@ measure_unit "(b3) EOM Jacobian" bench/compile/eom_jacobian.cpp "$ref_dir" "$(me
 python3 "$root/tools/urdf_to_ctga.py" "$root/tests/data/legged.urdf" --name legged --floating-base -o "$gen/legged.hpp"
 measure_unit "(b4) quadruped + frames, -O2" bench/compile/quadruped_frames.cpp "$ref_dir" \
     "$(measure_cmd "$root/bench/compile/quadruped_frames.cpp" "-I$gen -O2")"
+measure_unit "(b5) … + J̇, CoM, CMM, -O2" bench/compile/quadruped_frames.cpp "$ref_dir" \
+    "$(measure_cmd "$root/bench/compile/quadruped_frames.cpp" "-I$gen -O2 -DCTGA_MORE")"
 if ((with_heaviest)); then
     compile_db_read "$db" "${heaviest//./\\.}\$"
     ((${#cdb_files[@]} == 1)) || { echo "compile-cost: $heaviest not in $db (configure with CTGA_BUILD_TESTS=ON)" >&2; exit 1; }

@@ -24,9 +24,9 @@
 // Tolerances: 1e-12 relative for two exact routes (support/urdf_compare.hpp's measures, worst
 // values printed per test case: ≤ 1e-14, the largest ABA(RNEA(q̈)) = q̈ of the mimic model);
 // masses 1e-12 absolute; tool0 against the published DH without the fixture's residues 1e-10.
-// Three units (support/parts.hpp): ur5e and mobile_gripper (merged vs kept, its joints); legged;
-// the mimic and the names (as one unit 66 s and 2.4 GB with g++ -O2).
-// PARTS: 3
+// Four units (support/parts.hpp): ur5e; legged; the mimic and the names; mobile_gripper (merged vs
+// kept, its joints) (as one unit 66 s and 2.4 GB with g++ -O2).
+// PARTS: 4
 #include <array>
 #include <cmath>
 #include <cstddef>

@@ -18,6 +18,7 @@
 #include "support/featherstone.hpp"
 #include "support/relative_error.hpp"
 #include "support/parts.hpp"
+#include "support/random_floating_base.hpp"
 #include "support/random_tree.hpp"
 
 namespace {
@@ -101,11 +102,7 @@ constexpr int kind_number() {
     else return 9;
 }
 
-ctga::motor<double> motor_of(const fs::mat3& R, const fs::vec3& t) {
-    const Eigen::Quaterniond qr(R);
-    const ctga::rotor<double> r{qr.w(), qr.x(), qr.y(), qr.z()};
-    return ctga::rigid_motion(ctga::make_translator(t[0], t[1], t[2]), r);
-}
+using ctga::test::motor_of;
 
 template <class Tree>
 draw<Tree> make_draw(std::mt19937_64& rng) {
@@ -151,13 +148,7 @@ draw<Tree> make_draw(std::mt19937_64& rng) {
         const std::size_t qo = Tree::q_offset[static_cast<std::size_t>(i)];
         const int qr = d.ref.q_index(i);
         if (b.kind == fs::joint_kind::floating) {
-            const fs::mat3 R = fs::random_rotation(rng);
-            const fs::vec3 t = fs::uniform_vec3(rng, 0.5);
-            const Eigen::Quaterniond quat(R);
-            const ctga::motor<double> g = motor_of(R, t);
-            for (std::size_t k = 0; k < 8; ++k) d.q[qo + k] = g[k];
-            d.q_ref.template segment<3>(qr) = t;
-            d.q_ref.template segment<4>(qr + 3) << quat.w(), quat.x(), quat.y(), quat.z();
+            ctga::test::random_floating_base(rng, 0.5, d.q, qo, d.q_ref, qr);
         } else if (b.kind != fs::joint_kind::fixed) {
             d.q[qo] = d.q_ref[qr] = fs::uniform(rng, -2, 2);
         }

@@ -35,6 +35,7 @@
 #include "support/worst.hpp"
 #include "support/featherstone_frames.hpp"
 #include "support/random_tree.hpp"
+#include "support/relative_error.hpp"
 
 namespace fs = ctga::test::featherstone;
 using fs::mat3;
@@ -43,14 +44,10 @@ using fs::vec3;
 using fs::vec6;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using ctga::test::rel;
 
 namespace {
 
-double rel(const MatrixXd& x, const MatrixXd& y) {
-    if (y.size() == 0) return 0;
-    const double scale = std::max(1.0, y.cwiseAbs().maxCoeff());
-    return (x - y).cwiseAbs().maxCoeff() / scale;
-}
 
 MatrixXd mul(const MatrixXd& A, const MatrixXd& B) { return A.lazyProduct(B); }
 

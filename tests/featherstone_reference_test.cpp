@@ -31,6 +31,7 @@
 #include "support/worst.hpp"
 #include "support/featherstone.hpp"
 #include "support/random_tree.hpp"
+#include "support/relative_error.hpp"
 
 namespace fs = ctga::test::featherstone;
 using fs::mat3;
@@ -39,18 +40,13 @@ using fs::vec3;
 using fs::vec6;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using ctga::test::rel;
 
 namespace {
 
 // (The helpers take MatrixXd and multiply with lazyProduct, and H is factored by hand below:
 // one instantiation each instead of Eigen's large-matrix kernels for every expression type
 // keeps this file's compile time down.)
-double rel(const MatrixXd& x, const MatrixXd& y) {
-    if (y.size() == 0) return 0;
-    const double scale = std::max(1.0, y.cwiseAbs().maxCoeff());
-    return (x - y).cwiseAbs().maxCoeff() / scale;
-}
-double rel(double x, double y) { return std::abs(x - y) / std::max(1.0, std::abs(y)); }
 
 // A B, coefficient by coefficient
 MatrixXd mul(const MatrixXd& A, const MatrixXd& B) { return A.lazyProduct(B); }

@@ -54,7 +54,9 @@
 #include "support/featherstone.hpp"
 #include "support/featherstone_frames.hpp"
 #include "support/parts.hpp"
+#include "support/random_floating_base.hpp"
 #include "support/random_tree.hpp"
+#include "support/relative_error.hpp"
 
 namespace {
 
@@ -62,6 +64,7 @@ namespace ch = ctga::chains;
 namespace fs = ctga::test::featherstone;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using ctga::test::rel;
 
 constexpr double tol = 1e-12;           // direct formulas on both sides
 constexpr double tol_solve = 1e-11;     // forward dynamics (a solve on each side)
@@ -155,11 +158,7 @@ struct ref_joint<ch::mimic<J, M>> : ref_joint<J> {};
 // axis::x, y, z, minus_x, minus_y, minus_z as a unit vector
 inline fs::vec3 axis_vector(int a) { return (a < 3 ? 1.0 : -1.0) * fs::vec3::Unit(a % 3); }
 
-inline ctga::motor<double> motor_of(const fs::mat3& R, const fs::vec3& t) {
-    const Eigen::Quaterniond qr(R);
-    const ctga::rotor<double> r{qr.w(), qr.x(), qr.y(), qr.z()};
-    return ctga::rigid_motion(ctga::make_translator(t[0], t[1], t[2]), r);
-}
+using ctga::test::motor_of;
 inline ctga::vec3<double> v3(const fs::vec3& x) { return {x[0], x[1], x[2]}; }
 inline ctga::mat3<double> m3(const fs::mat3& X) {
     return {{{X(0, 0), X(0, 1), X(0, 2)}, {X(1, 0), X(1, 1), X(1, 2)}, {X(2, 0), X(2, 1), X(2, 2)}}};
@@ -190,13 +189,6 @@ MatrixXd rows(const M& H, std::size_t n) {
 }
 inline MatrixXd mat(const ctga::mat3<double>& R) { return rows(R, 3); }
 
-inline double rel(const MatrixXd& x, const MatrixXd& y) {
-    REQUIRE(x.rows() == y.rows());
-    REQUIRE(x.cols() == y.cols());
-    if (y.size() == 0) return 0;
-    const double scale = std::max(1.0, y.cwiseAbs().maxCoeff());
-    return (x - y).cwiseAbs().maxCoeff() / scale;
-}
 
 using ctga::test::worst;
 
@@ -284,13 +276,7 @@ draw<Tree> make_draw(std::mt19937_64& rng, const ch::coupling<double>& coupling)
         const std::size_t qo = Tree::q_offset[i];
         if (Tree::master[i] >= 0 || b.kind == fs::joint_kind::fixed) continue;
         if (b.kind == fs::joint_kind::floating) {
-            const fs::mat3 R = fs::random_rotation(rng);
-            const fs::vec3 t = fs::uniform_vec3(rng, 1.0);
-            const Eigen::Quaterniond quat(R);
-            const ctga::motor<double> g = motor_of(R, t);
-            for (std::size_t k = 0; k < 8; ++k) d.q[qo + k] = g[k];
-            d.q_r.template segment<3>(qr) = t;
-            d.q_r.template segment<4>(qr + 3) << quat.w(), quat.x(), quat.y(), quat.z();
+            ctga::test::random_floating_base(rng, 1.0, d.q, qo, d.q_r, qr);
             qr += 7;
         } else {
             const double x = b.kind == fs::joint_kind::revolute ? fs::uniform(rng, -3.1, 3.1) : fs::uniform(rng, -0.5, 0.5);

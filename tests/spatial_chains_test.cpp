@@ -26,6 +26,7 @@
 
 #include "../bench/spatial_chains.hpp"
 #include "support/catch.hpp"
+#include "support/relative_error.hpp"
 #include "support/featherstone.hpp"
 #include "support/random_tree.hpp"
 
@@ -35,16 +36,11 @@ namespace fs = ctga::test::featherstone;
 namespace sc = spatial::chains;
 using Eigen::MatrixXd;
 using Eigen::VectorXd;
+using ctga::test::rel;
 
 constexpr std::size_t capacity = 32;
 using model_t = sc::model<capacity>;
 constexpr double tolerance = 1e-12;
-
-double rel(const MatrixXd& x, const MatrixXd& y) {
-    if (y.size() == 0) return 0;
-    const double scale = std::max(1.0, y.cwiseAbs().maxCoeff());
-    return (x - y).cwiseAbs().maxCoeff() / scale;
-}
 
 fs::vec3 to_eigen(spatial::vec3 v) { return {v.x, v.y, v.z}; }
 spatial::vec3 to_spatial(const fs::vec3& v) { return {v.x(), v.y(), v.z()}; }

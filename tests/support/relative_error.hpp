@@ -1,5 +1,7 @@
-// Relative differences of a result against an Eigen reference: max |a − b| / max(1, max |b|),
-// for anything indexable a[i] (a joint vector, a screw) and a[i][j] (a joint-space matrix).
+// Relative differences of a result against a reference: max |a − b| / max(1, max |b|), b the
+// independent value. rel_error takes anything indexable a[i] (a joint vector, a screw) and a[i][j]
+// (a joint-space matrix) against an Eigen reference; rel takes two Eigen matrices (infinite when
+// their shapes differ, so the check that uses it fails) or two numbers.
 #pragma once
 
 #include <algorithm>
@@ -23,5 +25,12 @@ double rel_error(const A& a, const Eigen::MatrixBase<B>& b) {
         }
     return e / s;
 }
+
+inline double rel(const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
+    if (x.rows() != y.rows() || x.cols() != y.cols()) return INFINITY;
+    if (y.size() == 0) return 0;
+    return (x - y).cwiseAbs().maxCoeff() / std::max(1.0, y.cwiseAbs().maxCoeff());
+}
+inline double rel(double x, double y) { return std::abs(x - y) / std::max(1.0, std::abs(y)); }
 
 }  // namespace ctga::test

@@ -25,6 +25,7 @@
 
 #include "support/featherstone.hpp"
 #include "support/random_tree.hpp"
+#include "support/relative_error.hpp"
 
 namespace ctga::test::urdf {
 
@@ -93,12 +94,7 @@ inline fs::mat3 rpy_rotation(const std::array<double, 3>& rpy) {
     return Rz * Ry * Rx;
 }
 
-// rel(x, y) for Eigen matrices of one shape
-inline double rel(const Eigen::MatrixXd& x, const Eigen::MatrixXd& y) {
-    if (x.rows() != y.rows() || x.cols() != y.cols()) return INFINITY;
-    if (y.size() == 0) return 0;
-    return (x - y).cwiseAbs().maxCoeff() / std::max(1.0, y.cwiseAbs().maxCoeff());
-}
+using ctga::test::rel;
 // a pose against (R, t): the largest entry of |R − R'| and |t − t'|
 inline double pose_error(const ctga::motor_map<double>& G, const fs::mat3& R, const fs::vec3& t) {
     return std::max((eigen_rotation(G) - R).cwiseAbs().maxCoeff(), (eigen_translation(G) - t).cwiseAbs().maxCoeff());

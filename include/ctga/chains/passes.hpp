@@ -116,7 +116,7 @@ struct no_body_work {
 template <pass What, bool Poses, class Tree, class T, class Then = no_body_work>
 constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
                             const T* qdd, const vec3<T>& a_world, Then&& then = {}) noexcept {
-    each_body(m, [&](const auto& b) {
+    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
         using B = std::remove_cvref_t<decltype(b)>;
         using J = typename B::joint;
         const std::size_t i = b.i;

@@ -144,7 +144,7 @@ CTGA_ALWAYS_INLINE constexpr void visit_segment(const model<Tree, T>& m, F& f) {
         constexpr std::size_t dv = Tree::v_offset[S.first + L] - Tree::v_offset[S.first];
         // each pattern body's parameters in every repeat (the model keeps them in a tuple)
         const auto links = link_table<S.first, L, R>(m, std::make_index_sequence<L>{});
-        const auto body = [&]<std::size_t K>(std::integral_constant<std::size_t, K>, std::size_t r) {
+        const auto body = [&]<std::size_t K>(std::integral_constant<std::size_t, K>, std::size_t r) CTGA_INLINE_LAMBDA {
             constexpr std::size_t P = S.first + K;
             using link_type = std::remove_cvref_t<decltype(m.template link<P>())>;
             constexpr bool abs_parent = plan<Tree>::absolute(S.first, L, K);
@@ -155,12 +155,12 @@ CTGA_ALWAYS_INLINE constexpr void visit_segment(const model<Tree, T>& m, F& f) {
         };
         if constexpr (Forward) {
             for (std::size_t r = 0; r < R; ++r)
-                [&]<std::size_t... K>(std::index_sequence<K...>) {
+                [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
                     (body(std::integral_constant<std::size_t, K>{}, r), ...);
                 }(std::make_index_sequence<L>{});
         } else {
             for (std::size_t r = R; r-- > 0;)
-                [&]<std::size_t... K>(std::index_sequence<K...>) {
+                [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
                     (body(std::integral_constant<std::size_t, L - 1 - K>{}, r), ...);
                 }(std::make_index_sequence<L>{});
         }
@@ -171,14 +171,14 @@ CTGA_ALWAYS_INLINE constexpr void visit_segment(const model<Tree, T>& m, F& f) {
 // f(body handle) for every body in index order: parents before children.
 template <class Tree, class T, class F>
 CTGA_ALWAYS_INLINE constexpr void each_body(const model<Tree, T>& m, F&& f) {
-    [&]<std::size_t... G>(std::index_sequence<G...>) { (run_detail::visit_segment<true, G>(m, f), ...); }(
+    [&]<std::size_t... G>(std::index_sequence<G...>) CTGA_INLINE_LAMBDA { (run_detail::visit_segment<true, G>(m, f), ...); }(
         std::make_index_sequence<run_detail::plan<Tree>::count>{});
 }
 // … in reverse index order: children before parents.
 template <class Tree, class T, class F>
 CTGA_ALWAYS_INLINE constexpr void each_body_backward(const model<Tree, T>& m, F&& f) {
     constexpr std::size_t n = run_detail::plan<Tree>::count;
-    [&]<std::size_t... G>(std::index_sequence<G...>) { (run_detail::visit_segment<false, n - 1 - G>(m, f), ...); }(
+    [&]<std::size_t... G>(std::index_sequence<G...>) CTGA_INLINE_LAMBDA { (run_detail::visit_segment<false, n - 1 - G>(m, f), ...); }(
         std::make_index_sequence<n>{});
 }
 

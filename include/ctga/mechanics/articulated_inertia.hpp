@@ -169,7 +169,7 @@ CTGA_ALWAYS_INLINE constexpr mat3<T> rotate_block(const mat3<T>& R, const mat3<T
 // i of −Y T is t × (row i of Y)). 189m 150a for a full N; with a zero row and column Null
 // (minus_joint after an axis joint) the rotations skip it: 159m for a revolute joint's N.
 template <std::size_t Null = 6, class T>
-[[nodiscard]] constexpr articulated_inertia<T> transform(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
+CTGA_SCALAR_CODE [[nodiscard]] constexpr articulated_inertia<T> transform(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
     using linear3::cross;
     constexpr std::size_t skip_w = Null < 3 ? Null : 3, skip_v = Null >= 3 && Null < 6 ? Null - 3 : 3;
     const mat3<T>& R = G.R;

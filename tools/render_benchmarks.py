@@ -241,6 +241,11 @@ def main():
             lines.append(f"| {j} | {fmt_time(tc)} | {fmt_time(td)} | {fmt_time(tf)} | {speed} | {fmt(ec)} | "
                          f"{fmt(ed)} | {fmt(ef)} | {acc} |")
         lines.append("")
+    # measured by hand on the development robots (tools/urdf_check.py; not regenerated here)
+    robots = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench", "robots.md")
+    if os.path.exists(robots):
+        with open(robots) as f:
+            lines += [f.read().strip(), ""]
     if len(sys.argv) > 8:
         lines += chains_section(sys.argv[6], sys.argv[7], sys.argv[8], sys.argv[9:])
     if os.path.exists(compile_md):

@@ -3,6 +3,7 @@
 // Cl(0,6,2), Cl(3,0,1) and a 10-generator algebra against the naive dense reference; forced
 // unrolled and looped evaluation of the same expression; looped products inside larger
 // expressions, projected, and in formulas.
+// PARTS: 2
 #include <array>
 #include <bit>
 #include <cmath>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "support/looped.hpp"
+#include "support/parts.hpp"
 
 namespace {
 
@@ -50,6 +52,7 @@ void check_row_forms() {
     CHECK(row_form_mismatches<scalar<Alg>, Alg>() == 0);
 }
 
+#if CTGA_TEST_PART_HOLDS(0)
 TEST_CASE("every rule's row form equals the rule for every pair of blades", "[looped]") {
     check_row_forms<ctga::cl062>();
     check_row_forms<cl301>();
@@ -72,6 +75,9 @@ TEST_CASE("Cl(0,6,2): the full 256 x 256 products are looped and equal the dense
     check_all_products<even<ctga::cl062>, random_mv<ctga::cl062, 5, 40>>("Cl(0,6,2) even x 40 blades", rng);
 }
 
+#endif
+
+#if CTGA_TEST_PART_HOLDS(1)
 TEST_CASE("Cl(0,6,2): block products and the table loop, both for every rule, equal the dense reference",
           "[looped][cl062][blocks]") {
     std::mt19937_64 rng(2062);
@@ -88,8 +94,11 @@ TEST_CASE("Cl(0,6,2): block products and the table loop, both for every rule, eq
     check_both_loops<random_mv<ctga::cl062, 6, 100>, grade_mv<ctga::cl062, 3>>("Cl(0,6,2) 100 blades x trivectors", rng);
 }
 
+#endif
+
 // ---- looped products inside expressions -----------------------------------------------------------
 
+#if CTGA_TEST_PART_HOLDS(0)
 TEST_CASE("Cl(0,6,2): a product whose operand fills the high half's blocks runs with the halves swapped",
           "[looped][cl062][blocks]") {
     using motor_blade = ctga::multivector<ctga::cl062, double, motor_times_blade>;
@@ -104,6 +113,9 @@ TEST_CASE("Cl(0,6,2): a product whose operand fills the high half's blocks runs 
     check_both_loops<motor_blade, even<ctga::cl062>>("Cl(0,6,2) motor-blade x even", rng);
 }
 
+#endif
+
+#if CTGA_TEST_PART_HOLDS(1)
 TEST_CASE("looped products compose: operands that are expressions, sums, projections, formulas",
           "[looped][engine]") {
     std::mt19937_64 rng(7);
@@ -131,5 +143,6 @@ TEST_CASE("looped products compose: operands that are expressions, sums, project
     constexpr auto square = ctga::formula([](auto x) { return x * x; });
     check_close("formula x x", square(a), dense::gp(da, da));
 }
+#endif
 
 }  // namespace

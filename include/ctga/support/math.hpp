@@ -51,34 +51,37 @@ struct cos_sin_pair {
 };
 template <class T>
 [[nodiscard]] constexpr cos_sin_pair<T> cos_sin(const T& x) noexcept {
-    if (std::is_constant_evaluated()) {
-        if (!is_finite(x)) return {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::quiet_NaN()};
-        using R = std::conditional_t<std::is_floating_point_v<T>, long double, T>;
-        const R half_pi = R(1.5707963267948966192313216916397514L);
-        const R y = R(x);
-        const R kf = y / half_pi;
-        const long long k = static_cast<long long>(kf < R(0) ? kf - R(0.5) : kf + R(0.5));
-        const R r = y - R(k) * half_pi;
-        R c = R(1), s = r, term_c = R(1), term_s = r;
-        const R r2 = r * r;
-        for (int n = 1; n < 40; ++n) {
-            term_c = -term_c * r2 / R((2 * n - 1) * (2 * n));
-            term_s = -term_s * r2 / R((2 * n) * (2 * n + 1));
-            const R c1 = c + term_c, s1 = s + term_s;
-            if (c1 == c && s1 == s) break;
-            c = c1, s = s1;
+    // (a scalar type that is not a floating-point number, a dual number or a SIMD pack, takes its
+    // own cos and sin, found by argument-dependent lookup)
+    if constexpr (std::is_floating_point_v<T>) {
+        if (std::is_constant_evaluated()) {
+            if (!is_finite(x)) return {std::numeric_limits<T>::quiet_NaN(), std::numeric_limits<T>::quiet_NaN()};
+            using R = long double;
+            const R half_pi = R(1.5707963267948966192313216916397514L);
+            const R y = R(x);
+            const R kf = y / half_pi;
+            const long long k = static_cast<long long>(kf < R(0) ? kf - R(0.5) : kf + R(0.5));
+            const R r = y - R(k) * half_pi;
+            R c = R(1), s = r, term_c = R(1), term_s = r;
+            const R r2 = r * r;
+            for (int n = 1; n < 40; ++n) {
+                term_c = -term_c * r2 / R((2 * n - 1) * (2 * n));
+                term_s = -term_s * r2 / R((2 * n) * (2 * n + 1));
+                const R c1 = c + term_c, s1 = s + term_s;
+                if (c1 == c && s1 == s) break;
+                c = c1, s = s1;
+            }
+            switch (((k % 4) + 4) % 4) {  // x = r + k π/2
+                case 0: return {T(c), T(s)};
+                case 1: return {T(-s), T(c)};
+                case 2: return {T(-c), T(-s)};
+                default: return {T(s), T(-c)};
+            }
         }
-        switch (((k % 4) + 4) % 4) {  // x = r + k π/2
-            case 0: return {T(c), T(s)};
-            case 1: return {T(-s), T(c)};
-            case 2: return {T(-c), T(-s)};
-            default: return {T(s), T(-c)};
-        }
-    } else {
-        using std::cos;
-        using std::sin;
-        return {cos(x), sin(x)};
     }
+    using std::cos;
+    using std::sin;
+    return {cos(x), sin(x)};
 }
 template <class T>
 [[nodiscard]] constexpr T cos(const T& x) noexcept {

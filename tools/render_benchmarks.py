@@ -146,6 +146,15 @@ def chains_section(chains_json, chains_instr, scaling_svg, scaling_jsons):
     return out
 
 
+def kept_section(*path):
+    """A section measured by hand and kept in bench/ (not regenerated here), or None."""
+    full = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench", *path)
+    if not os.path.exists(full):
+        return None
+    with open(full) as f:
+        return f.read().strip()
+
+
 def main():
     results, instr_path, compile_md, out_md, out_svg = sys.argv[1:6]
     context, t = medians(results)
@@ -242,20 +251,18 @@ def main():
                          f"{fmt(ed)} | {fmt(ef)} | {acc} |")
         lines.append("")
     # measured by hand on the development robots (tools/urdf_check.py; not regenerated here)
-    robots = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench", "robots.md")
-    if os.path.exists(robots):
-        with open(robots) as f:
-            lines += [f.read().strip(), ""]
+    robots = kept_section("robots.md")
+    if robots:
+        lines += [robots, ""]
     if len(sys.argv) > 8:
         lines += chains_section(sys.argv[6], sys.argv[7], sys.argv[8], sys.argv[9:])
     if os.path.exists(compile_md):
         with open(compile_md) as f:
             lines += ["## Compile time", "", f.read().strip(), ""]
     # measured by hand when the engine changed (not regenerated): before/after per expression class
-    history = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "bench", "compile", "history.md")
-    if os.path.exists(history):
-        with open(history) as f:
-            lines += [f.read().strip(), ""]
+    history = kept_section("compile", "history.md")
+    if history:
+        lines += [history, ""]
     else:
         lines += ["## Compile time", "", "Run `bash tools/compile-cost.sh` before `tools/bench.sh` to include the",
                   "compile-time tables here.", ""]

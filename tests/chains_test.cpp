@@ -20,145 +20,15 @@
 #include "support/parts.hpp"
 #include "support/random_floating_base.hpp"
 #include "support/random_tree.hpp"
+#include "support/random_structure.hpp"
 
 namespace {
 
 namespace ch = ctga::chains;
 namespace fs = ctga::test::featherstone;
-
-// ---- tree structures drawn at compile time ---------------------------------------------------
-
-constexpr std::uint64_t splitmix(std::uint64_t& s) {
-    std::uint64_t z = (s += 0x9e3779b97f4a7c15ull);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
-    return z ^ (z >> 31);
-}
-
-// joint kinds by number: 0–2 revolute about x, y, z; 3–5 prismatic along x, y, z; 6 revolute
-// about a run-time axis; 7 prismatic along one; 8 fixed; 9 floating (body 0 only)
-template <int K>
-using joint_of = std::conditional_t<
-    K == 0, ch::revolute_x,
-    std::conditional_t<
-        K == 1, ch::revolute_y,
-        std::conditional_t<
-            K == 2, ch::revolute_z,
-            std::conditional_t<
-                K == 3, ch::prismatic_x,
-                std::conditional_t<
-                    K == 4, ch::prismatic_y,
-                    std::conditional_t<
-                        K == 5, ch::prismatic_z,
-                        std::conditional_t<K == 6, ch::revolute_about,
-                                           std::conditional_t<K == 7, ch::prismatic_along,
-                                                              std::conditional_t<K == 8, ch::fixed, ch::floating>>>>>>>>>;
-
-template <std::uint64_t Seed, std::size_t N, bool Floating>
-struct random_structure {
-    struct spec {
-        std::array<int, N> parent{};
-        std::array<int, N> kind{};
-    };
-    static constexpr spec value = [] {
-        spec s;
-        std::uint64_t state = Seed;
-        for (std::size_t i = 0; i < N; ++i) {
-            const std::uint64_t r = splitmix(state);
-            // half the time the previous body (long chains), else any earlier body or the world
-            s.parent[i] = i == 0 ? -1 : (r & 1) ? static_cast<int>(i) - 1 : static_cast<int>((r >> 8) % (i + 1)) - 1;
-            s.kind[i] = (i == 0 && Floating) ? 9 : static_cast<int>((r >> 32) % 9);
-        }
-        return s;
-    }();
-    template <std::size_t... I>
-    static auto make(std::index_sequence<I...>) -> ch::tree<ch::link<value.parent[I], joint_of<value.kind[I]>>...>;
-    using type = decltype(make(std::make_index_sequence<N>{}));
-};
-
-// ---- one draw of parameters and state, given to both -------------------------------------------
-
-template <class Tree>
-struct draw {
-    ch::model<Tree> m;
-    fs::model ref;
-    ch::configuration<Tree> q{};
-    Eigen::VectorXd q_ref;
-    ch::joint_vector<Tree> qd{}, qdd{};
-    Eigen::VectorXd qd_ref, qdd_ref;
-};
-
-template <class J>
-constexpr int kind_number() {
-    if constexpr (std::is_same_v<J, ch::revolute_x>) return 0;
-    else if constexpr (std::is_same_v<J, ch::revolute_y>) return 1;
-    else if constexpr (std::is_same_v<J, ch::revolute_z>) return 2;
-    else if constexpr (std::is_same_v<J, ch::prismatic_x>) return 3;
-    else if constexpr (std::is_same_v<J, ch::prismatic_y>) return 4;
-    else if constexpr (std::is_same_v<J, ch::prismatic_z>) return 5;
-    else if constexpr (std::is_same_v<J, ch::revolute_about>) return 6;
-    else if constexpr (std::is_same_v<J, ch::prismatic_along>) return 7;
-    else if constexpr (std::is_same_v<J, ch::fixed>) return 8;
-    else return 9;
-}
-
-using ctga::test::motor_of;
-
-template <class Tree>
-draw<Tree> make_draw(std::mt19937_64& rng) {
-    draw<Tree> d;
-    d.ref.gravity = fs::vec3(fs::uniform(rng, -2, 2), fs::uniform(rng, -2, 2), -9.81);
-    d.m.gravity = {d.ref.gravity[0], d.ref.gravity[1], d.ref.gravity[2]};
-    d.ref.bodies.resize(Tree::size);
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        ([&] {
-            using J = typename Tree::template joint_at<I>;
-            constexpr int k = kind_number<J>();
-            fs::body& b = d.ref.bodies[I];
-            b.parent = Tree::parent[I];
-            b.kind = k <= 2 || k == 6 ? fs::joint_kind::revolute
-                     : k <= 7         ? fs::joint_kind::prismatic
-                     : k == 8         ? fs::joint_kind::fixed
-                                      : fs::joint_kind::floating;
-            b.axis = k <= 5 ? fs::vec3::Unit(k % 3) : fs::random_unit_vec3(rng);
-            b.rotation = fs::random_rotation(rng);
-            b.translation = fs::uniform_vec3(rng, 0.5);
-            b.mass = fs::uniform(rng, 0.5, 2.0);
-            b.com = fs::uniform_vec3(rng, 0.3);
-            b.inertia_c = fs::random_inertia_c(rng, b.mass, 0.05, 0.3);
-            const ctga::mat3<double> Ic{{{b.inertia_c(0, 0), b.inertia_c(0, 1), b.inertia_c(0, 2)},
-                                         {b.inertia_c(1, 0), b.inertia_c(1, 1), b.inertia_c(1, 2)},
-                                         {b.inertia_c(2, 0), b.inertia_c(2, 1), b.inertia_c(2, 2)}}};
-            const auto mass = ctga::make_mass_properties(b.mass, ctga::vec3<double>{b.com[0], b.com[1], b.com[2]}, Ic);
-            const auto link = [&] {
-                if constexpr (ch::has_run_time_axis<J>)
-                    return ch::make_link<J>(motor_of(b.rotation, b.translation), mass, ctga::vec3<double>{b.axis[0], b.axis[1], b.axis[2]});
-                else return ch::make_link<J>(motor_of(b.rotation, b.translation), mass);
-            }();
-            REQUIRE(link);
-            d.m.template link<I>() = *link;
-        }(), ...);
-    }(std::make_index_sequence<Tree::size>{});
-    // the state: the reference's q for a floating joint is (x, y, z, qw, qx, qy, qz), ctga's the motor
-    d.q_ref.resize(d.ref.nq());
-    d.qd_ref.resize(d.ref.nv());
-    d.qdd_ref.resize(d.ref.nv());
-    for (int i = 0; i < static_cast<int>(Tree::size); ++i) {
-        const fs::body& b = d.ref[i];
-        const std::size_t qo = Tree::q_offset[static_cast<std::size_t>(i)];
-        const int qr = d.ref.q_index(i);
-        if (b.kind == fs::joint_kind::floating) {
-            ctga::test::random_floating_base(rng, 0.5, d.q, qo, d.q_ref, qr);
-        } else if (b.kind != fs::joint_kind::fixed) {
-            d.q[qo] = d.q_ref[qr] = fs::uniform(rng, -2, 2);
-        }
-    }
-    for (std::size_t k = 0; k < Tree::nv; ++k) {
-        d.qd[k] = d.qd_ref[static_cast<Eigen::Index>(k)] = fs::uniform(rng, -2, 2);
-        d.qdd[k] = d.qdd_ref[static_cast<Eigen::Index>(k)] = fs::uniform(rng, -2, 2);
-    }
-    return d;
-}
+using ctga::test::random_structure;
+using ctga::test::draw;
+using ctga::test::make_draw;
 
 using ctga::test::rel_error;
 

@@ -58,6 +58,18 @@
 //   q_dot(m, q, v)               nq numbers: the rate of q for the velocity coordinates v
 // and the spatial helpers skew, crm, crf, plucker, plucker_inverse, force_transform,
 // spatial_inertia, axis_angle, quaternion_rotation, jcalc, tree_transform.
+//
+// The scalar. The model (`body`, `model`) is always double. The functions that depend on the
+// state — skew, crm, crf, plucker, axis_angle, quaternion_rotation, jcalc, compute_positions,
+// detail::forward_pass, rnea, crba, inverse_small, aba — are templates on the scalar S of the
+// state (default double), e.g. a forward-mode dual number (support/dual_eigen.hpp, used by
+// support/featherstone_derivatives.hpp); the model's numbers are converted to S where used.
+// Their parameters are non-deduced (std::type_identity_t), so the double calls take Eigen
+// expressions as before (fs::rnea(m, q, v, VectorXd::Zero(n))) and another scalar is named:
+// fs::rnea<D>(m, q, v, a) with q, v, a of type vecX_t<D>. The double results are those of the
+// one-scalar version this file had before, bit for bit (the same operations in the same order;
+// cast<double>() of a double matrix is the matrix itself). The rest (fk, the Jacobians, the
+// energies, q_dot, plucker_inverse, force_transform, spatial_inertia, tree_transform) is double.
 // Frames (poses, velocities, accelerations, Jacobians and their time derivatives in local /
 // world / local-world-aligned coordinates), centre of mass, centroidal momentum, mimic joints and
 // the lumping of fixed links: support/featherstone_frames.hpp, built on this file.
@@ -66,22 +78,34 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Dense>
 
 namespace ctga::test::featherstone {
 
-using vec3 = Eigen::Vector3d;
-using mat3 = Eigen::Matrix3d;
-using vec6 = Eigen::Matrix<double, 6, 1>;
-using mat6 = Eigen::Matrix<double, 6, 6>;
+template <class S> using vec3_t = Eigen::Matrix<S, 3, 1>;
+template <class S> using mat3_t = Eigen::Matrix<S, 3, 3>;
+template <class S> using vec6_t = Eigen::Matrix<S, 6, 1>;
+template <class S> using mat6_t = Eigen::Matrix<S, 6, 6>;
 // At most 6 columns / rows: a joint has at most 6 degrees of freedom. The fixed maximum sizes
 // make Eigen multiply these coefficient by coefficient instead of instantiating its large-matrix
 // product kernels, which keeps the compile time of the tests that include this file low.
-using mat6x = Eigen::Matrix<double, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>;   // 6 × n_i
-using matn = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6>;   // n_i × n_i
-using vecn = Eigen::Matrix<double, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1>;   // n_i
+template <class S> using mat6x_t = Eigen::Matrix<S, 6, Eigen::Dynamic, Eigen::ColMajor, 6, 6>;   // 6 × n_i
+template <class S> using matn_t = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic, Eigen::ColMajor, 6, 6>;   // n_i × n_i
+template <class S> using vecn_t = Eigen::Matrix<S, Eigen::Dynamic, 1, Eigen::ColMajor, 6, 1>;   // n_i
+template <class S> using vecX_t = Eigen::Matrix<S, Eigen::Dynamic, 1>;                 // q, v, a, τ
+template <class S> using matX_t = Eigen::Matrix<S, Eigen::Dynamic, Eigen::Dynamic>;    // H
+using vec3 = vec3_t<double>;
+using mat3 = mat3_t<double>;
+using vec6 = vec6_t<double>;
+using mat6 = mat6_t<double>;
+using mat6x = mat6x_t<double>;
+using matn = matn_t<double>;
+using vecn = vecn_t<double>;
+// a parameter of type arg<T> does not take part in deducing S (see "The scalar" above)
+template <class T> using arg = std::type_identity_t<T>;
 
 // ---------------------------------------------------------------------------------------------
 // The model.
@@ -151,8 +175,9 @@ struct model {
 // Spatial algebra (RBDA chapter 2).
 
 // x× as a matrix: skew(x) y = x × y
-inline mat3 skew(const vec3& x) {
-    mat3 m;
+template <class S = double>
+mat3_t<S> skew(const arg<vec3_t<S>>& x) {
+    mat3_t<S> m;
     m << 0, -x.z(), x.y(),
          x.z(), 0, -x.x(),
          -x.y(), x.x(), 0;
@@ -160,23 +185,26 @@ inline mat3 skew(const vec3& x) {
 }
 
 // motion cross product  m× = [[ω×, 0], [v×, ω×]]                                  (RBDA ch. 2)
-inline mat6 crm(const vec6& m) {
-    mat6 r = mat6::Zero();
-    r.topLeftCorner<3, 3>() = skew(m.head<3>());
-    r.bottomLeftCorner<3, 3>() = skew(m.tail<3>());
-    r.bottomRightCorner<3, 3>() = skew(m.head<3>());
+template <class S = double>
+mat6_t<S> crm(const arg<vec6_t<S>>& m) {
+    mat6_t<S> r = mat6_t<S>::Zero();
+    r.template topLeftCorner<3, 3>() = skew<S>(m.template head<3>());
+    r.template bottomLeftCorner<3, 3>() = skew<S>(m.template tail<3>());
+    r.template bottomRightCorner<3, 3>() = skew<S>(m.template head<3>());
     return r;
 }
 
 // force cross product  m×* = −(m×)ᵀ = [[ω×, v×], [0, ω×]]                          (RBDA ch. 2)
-inline mat6 crf(const vec6& m) { return -crm(m).transpose(); }
+template <class S = double>
+mat6_t<S> crf(const arg<vec6_t<S>>& m) { return -crm<S>(m).transpose(); }
 
 // ^B X_A for B at r (A coordinates) with E: A coords → B coords:  rot(E) xlt(r)    (RBDA ch. 2, "coordinate transforms")
-inline mat6 plucker(const mat3& E, const vec3& r) {
-    mat6 X = mat6::Zero();
-    X.topLeftCorner<3, 3>() = E;
-    X.bottomLeftCorner<3, 3>() = -E * skew(r);
-    X.bottomRightCorner<3, 3>() = E;
+template <class S = double>
+mat6_t<S> plucker(const arg<mat3_t<S>>& E, const arg<vec3_t<S>>& r) {
+    mat6_t<S> X = mat6_t<S>::Zero();
+    X.template topLeftCorner<3, 3>() = E;
+    X.template bottomLeftCorner<3, 3>() = -E * skew<S>(r);
+    X.template bottomRightCorner<3, 3>() = E;
     return X;
 }
 
@@ -208,16 +236,21 @@ inline mat6 spatial_inertia(double m, const vec3& c, const mat3& Ic) {
 inline mat6 spatial_inertia(const body& b) { return spatial_inertia(b.mass, b.com, b.inertia_c); }
 
 // rotation by angle θ about the unit axis u (Rodrigues): R = 1 + sin θ u× + (1 − cos θ) u×²
-inline mat3 axis_angle(const vec3& u, double theta) {
-    const mat3 U = skew(u);
-    return mat3::Identity() + std::sin(theta) * U + (1 - std::cos(theta)) * U * U;
+template <class S = double>
+mat3_t<S> axis_angle(const vec3& u, const arg<S>& theta) {
+    using std::cos;
+    using std::sin;
+    const mat3_t<S> U = skew(u).template cast<S>();
+    return mat3_t<S>::Identity() + sin(theta) * U + (1 - cos(theta)) * U * U;
 }
 
 // the rotation matrix of the unit Hamilton quaternion (w, x, y, z) (normalised here), R v = q v q*
-inline mat3 quaternion_rotation(double w, double x, double y, double z) {
-    const double n = std::sqrt(w * w + x * x + y * y + z * z);
+template <class S = double>
+mat3_t<S> quaternion_rotation(arg<S> w, arg<S> x, arg<S> y, arg<S> z) {
+    using std::sqrt;
+    const S n = sqrt(w * w + x * x + y * y + z * z);
     w /= n; x /= n; y /= n; z /= n;
-    mat3 R;
+    mat3_t<S> R;
     R << 1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y),
          2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x),
          2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y);
@@ -227,47 +260,51 @@ inline mat3 quaternion_rotation(double w, double x, double y, double z) {
 // ---------------------------------------------------------------------------------------------
 // Joints (RBDA ch. 4, Table 4.1) and the tree's positions.
 
-struct joint_state {
-    mat3 R;     // body axes in joint-frame coordinates
-    vec3 t;     // body origin in joint-frame coordinates
-    mat6 XJ;    // ^B X_J = rot(Rᵀ) xlt(t)
-    mat6x S;    // motion subspace, body coordinates (6 × nv_i)
+template <class Scalar>
+struct joint_state_t {
+    mat3_t<Scalar> R;     // body axes in joint-frame coordinates
+    vec3_t<Scalar> t;     // body origin in joint-frame coordinates
+    mat6_t<Scalar> XJ;    // ^B X_J = rot(Rᵀ) xlt(t)
+    mat6x_t<Scalar> S;    // motion subspace, body coordinates (6 × nv_i)
 };
+using joint_state = joint_state_t<double>;
 
 // jcalc (RBDA ch. 4): q points at the joint's first position coordinate
-inline joint_state jcalc(const body& b, const double* q) {
-    joint_state j;
-    j.R = mat3::Identity();
-    j.t = vec3::Zero();
+template <class S>
+joint_state_t<S> jcalc(const body& b, const S* q) {
+    joint_state_t<S> j;
+    j.R = mat3_t<S>::Identity();
+    j.t = vec3_t<S>::Zero();
     switch (b.kind) {
     case joint_kind::revolute:
-        j.R = axis_angle(b.axis, q[0]);
-        j.S = mat6x::Zero(6, 1);
-        j.S.col(0).head<3>() = b.axis;   // the axis is fixed by the rotation about it
+        j.R = axis_angle<S>(b.axis, q[0]);
+        j.S = mat6x_t<S>::Zero(6, 1);
+        j.S.col(0).template head<3>() = b.axis.template cast<S>();   // the axis is fixed by the rotation about it
         break;
     case joint_kind::prismatic:
-        j.t = q[0] * b.axis;
-        j.S = mat6x::Zero(6, 1);
-        j.S.col(0).tail<3>() = b.axis;
+        j.t = q[0] * b.axis.template cast<S>();
+        j.S = mat6x_t<S>::Zero(6, 1);
+        j.S.col(0).template tail<3>() = b.axis.template cast<S>();
         break;
     case joint_kind::fixed:
-        j.S = mat6x::Zero(6, 0);
+        j.S = mat6x_t<S>::Zero(6, 0);
         break;
     case joint_kind::floating:
-        j.t = vec3(q[0], q[1], q[2]);
-        j.R = quaternion_rotation(q[3], q[4], q[5], q[6]);
-        j.S = mat6x::Identity(6, 6);
+        j.t = vec3_t<S>(q[0], q[1], q[2]);
+        j.R = quaternion_rotation<S>(q[3], q[4], q[5], q[6]);
+        j.S = mat6x_t<S>::Identity(6, 6);
         break;
     }
-    j.XJ = plucker(j.R.transpose(), j.t);
+    j.XJ = plucker<S>(j.R.transpose(), j.t);
     return j;
 }
 
 // the joint frame's placement in the parent: ^J X_λ = rot(rotationᵀ) xlt(translation)  (X_T, RBDA ch. 4)
 inline mat6 tree_transform(const body& b) { return plucker(b.rotation.transpose(), b.translation); }
 
-inline void check_sizes(const model& m, const Eigen::VectorXd& q, const Eigen::VectorXd* v,
-                        const std::vector<vec6>* f_ext = nullptr) {
+template <class Vector>
+void check_sizes(const model& m, const Vector& q, const arg<Vector>* v,
+                 const std::vector<vec6>* f_ext = nullptr) {
     for (int i = 0; i < m.size(); ++i)
         if (m[i].parent < -1 || m[i].parent >= i)
             throw std::invalid_argument("featherstone: body " + std::to_string(i) +
@@ -279,31 +316,36 @@ inline void check_sizes(const model& m, const Eigen::VectorXd& q, const Eigen::V
 }
 
 // Everything that depends on q only.
-struct positions {
-    std::vector<mat6> Xup;     // ^i X_λ(i) = X_J X_T (λ = −1: ^i X_0)
-    std::vector<mat6> X0;      // ^i X_0 (world → body i), as a product of the Xup
-    std::vector<mat6x> S;      // motion subspaces, body coordinates
-    std::vector<mat3> R;       // body axes in world coordinates, composed from the 3×3 placements
-    std::vector<vec3> p;       // body origin in world coordinates
+template <class Scalar>
+struct positions_t {
+    std::vector<mat6_t<Scalar>> Xup;     // ^i X_λ(i) = X_J X_T (λ = −1: ^i X_0)
+    std::vector<mat6_t<Scalar>> X0;      // ^i X_0 (world → body i), as a product of the Xup
+    std::vector<mat6x_t<Scalar>> S;      // motion subspaces, body coordinates
+    std::vector<mat3_t<Scalar>> R;       // body axes in world coordinates, composed from the 3×3 placements
+    std::vector<vec3_t<Scalar>> p;       // body origin in world coordinates
 };
+using positions = positions_t<double>;
 
-inline positions compute_positions(const model& m, const Eigen::VectorXd& q) {
+template <class S = double>
+positions_t<S> compute_positions(const model& m, const arg<vecX_t<S>>& q) {
     check_sizes(m, q, nullptr);
     const auto n = static_cast<std::size_t>(m.size());
-    positions P;
+    positions_t<S> P;
     P.Xup.resize(n); P.X0.resize(n); P.S.resize(n); P.R.resize(n); P.p.resize(n);
     for (int i = 0; i < m.size(); ++i) {
         const auto k = static_cast<std::size_t>(i);
         const body& b = m[i];
-        const joint_state j = jcalc(b, q.data() + m.q_index(i));
+        const joint_state_t<S> j = jcalc(b, q.data() + m.q_index(i));
+        const auto rotation = b.rotation.template cast<S>();         // (S = double: b.rotation itself)
+        const auto translation = b.translation.template cast<S>();
         P.S[k] = j.S;
-        P.Xup[k] = j.XJ * tree_transform(b);
+        P.Xup[k] = j.XJ * tree_transform(b).template cast<S>();
         // world placement by composing rotations and origins directly (not via the 6×6 X)
-        const mat3 Rp = b.parent < 0 ? mat3::Identity() : P.R[static_cast<std::size_t>(b.parent)];
-        const vec3 pp = b.parent < 0 ? vec3::Zero() : P.p[static_cast<std::size_t>(b.parent)];
-        P.R[k] = Rp * b.rotation * j.R;
-        P.p[k] = pp + Rp * (b.translation + b.rotation * j.t);
-        P.X0[k] = b.parent < 0 ? P.Xup[k] : mat6(P.Xup[k] * P.X0[static_cast<std::size_t>(b.parent)]);
+        const mat3_t<S> Rp = b.parent < 0 ? mat3_t<S>::Identity() : P.R[static_cast<std::size_t>(b.parent)];
+        const vec3_t<S> pp = b.parent < 0 ? vec3_t<S>::Zero() : P.p[static_cast<std::size_t>(b.parent)];
+        P.R[k] = Rp * rotation * j.R;
+        P.p[k] = pp + Rp * (translation + rotation * j.t);
+        P.X0[k] = b.parent < 0 ? P.Xup[k] : mat6_t<S>(P.Xup[k] * P.X0[static_cast<std::size_t>(b.parent)]);
     }
     return P;
 }
@@ -330,27 +372,30 @@ namespace detail {
 // The forward pass of RNEA / ABA (RBDA Table 5.1):
 //   v_i = ^iX_λ v_λ + S_i q̇_i,   a_i = ^iX_λ a_λ + S_i q̈_i + c_J + v_i × S_i q̇_i,
 // with v_world = 0 and a_world = a0 (world coordinates).
-inline void forward_pass(const model& m, const positions& P, const Eigen::VectorXd& v,
-                         const Eigen::VectorXd& a, const vec6& a0,
-                         std::vector<vec6>& vel, std::vector<vec6>& acc) {
+template <class S>
+void forward_pass(const model& m, const positions_t<S>& P, const arg<vecX_t<S>>& v,
+                  const arg<vecX_t<S>>& a, const arg<vec6_t<S>>& a0,
+                  std::vector<vec6_t<S>>& vel, std::vector<vec6_t<S>>& acc) {
+    using vec6s = vec6_t<S>;
     const auto n = static_cast<std::size_t>(m.size());
-    vel.assign(n, vec6::Zero());
-    acc.assign(n, vec6::Zero());
+    vel.assign(n, vec6s::Zero());
+    acc.assign(n, vec6s::Zero());
     for (int i = 0; i < m.size(); ++i) {
         const auto k = static_cast<std::size_t>(i);
         const int nvi = joint_nv(m[i].kind);
-        const vec6 vJ = P.S[k] * v.segment(m.v_index(i), nvi);
-        const vec6 vp = m[i].parent < 0 ? vec6::Zero() : vel[static_cast<std::size_t>(m[i].parent)];
-        const vec6 ap = m[i].parent < 0 ? a0 : acc[static_cast<std::size_t>(m[i].parent)];
+        const vec6s vJ = P.S[k] * v.segment(m.v_index(i), nvi);
+        const vec6s vp = m[i].parent < 0 ? vec6s::Zero() : vel[static_cast<std::size_t>(m[i].parent)];
+        const vec6s ap = m[i].parent < 0 ? a0 : acc[static_cast<std::size_t>(m[i].parent)];
         vel[k] = P.Xup[k] * vp + vJ;
-        acc[k] = P.Xup[k] * ap + P.S[k] * a.segment(m.v_index(i), nvi) + crm(vel[k]) * vJ;   // c_J = 0
+        acc[k] = P.Xup[k] * ap + P.S[k] * a.segment(m.v_index(i), nvi) + crm<S>(vel[k]) * vJ;   // c_J = 0
     }
 }
 
 // −a_g: the fictitious base acceleration that accounts for gravity (RBDA ch. 5)
-inline vec6 gravity_base(const model& m) {
-    vec6 a0 = vec6::Zero();
-    a0.tail<3>() = -m.gravity;
+template <class S = double>
+vec6_t<S> gravity_base(const model& m) {
+    vec6_t<S> a0 = vec6_t<S>::Zero();
+    a0.template tail<3>() = -m.gravity.template cast<S>();
     return a0;
 }
 
@@ -373,22 +418,23 @@ inline kinematics fk(const model& m, const Eigen::VectorXd& q, const Eigen::Vect
 // ---------------------------------------------------------------------------------------------
 // Inverse dynamics: the recursive Newton–Euler algorithm (RBDA Table 5.1).
 
-inline Eigen::VectorXd rnea(const model& m, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                            const Eigen::VectorXd& a, const std::vector<vec6>& f_ext = {}) {
+template <class S = double>
+vecX_t<S> rnea(const model& m, const arg<vecX_t<S>>& q, const arg<vecX_t<S>>& v,
+               const arg<vecX_t<S>>& a, const std::vector<vec6>& f_ext = {}) {
     check_sizes(m, q, &v, &f_ext);
     if (a.size() != m.nv()) throw std::invalid_argument("featherstone: a has the wrong size");
-    const positions P = compute_positions(m, q);
-    std::vector<vec6> vel, acc;
-    detail::forward_pass(m, P, v, a, detail::gravity_base(m), vel, acc);
+    const positions_t<S> P = compute_positions<S>(m, q);
+    std::vector<vec6_t<S>> vel, acc;
+    detail::forward_pass(m, P, v, a, detail::gravity_base<S>(m), vel, acc);
     const auto n = static_cast<std::size_t>(m.size());
-    std::vector<vec6> f(n);
+    std::vector<vec6_t<S>> f(n);
     // f_i = I_i a_i + v_i ×* I_i v_i − f_i^x                                        (RBDA Table 5.1)
     for (std::size_t k = 0; k < n; ++k) {
-        const mat6 I = spatial_inertia(m.bodies[k]);
-        f[k] = I * acc[k] + crf(vel[k]) * (I * vel[k]);
-        if (!f_ext.empty()) f[k] -= f_ext[k];
+        const mat6_t<S> I = spatial_inertia(m.bodies[k]).template cast<S>();
+        f[k] = I * acc[k] + crf<S>(vel[k]) * (I * vel[k]);
+        if (!f_ext.empty()) f[k] -= f_ext[k].template cast<S>();
     }
-    Eigen::VectorXd tau(m.nv());
+    vecX_t<S> tau(m.nv());
     for (int i = m.size() - 1; i >= 0; --i) {
         const auto k = static_cast<std::size_t>(i);
         tau.segment(m.v_index(i), joint_nv(m[i].kind)) = P.S[k].transpose() * f[k];   // Table 5.1
@@ -401,12 +447,13 @@ inline Eigen::VectorXd rnea(const model& m, const Eigen::VectorXd& q, const Eige
 // ---------------------------------------------------------------------------------------------
 // The joint-space inertia matrix: the composite-rigid-body algorithm (RBDA Table 6.2).
 
-inline Eigen::MatrixXd crba(const model& m, const Eigen::VectorXd& q) {
-    const positions P = compute_positions(m, q);
+template <class S = double>
+matX_t<S> crba(const model& m, const arg<vecX_t<S>>& q) {
+    const positions_t<S> P = compute_positions<S>(m, q);
     const auto n = static_cast<std::size_t>(m.size());
-    std::vector<mat6> Ic(n);
-    for (std::size_t k = 0; k < n; ++k) Ic[k] = spatial_inertia(m.bodies[k]);
-    Eigen::MatrixXd H = Eigen::MatrixXd::Zero(m.nv(), m.nv());
+    std::vector<mat6_t<S>> Ic(n);
+    for (std::size_t k = 0; k < n; ++k) Ic[k] = spatial_inertia(m.bodies[k]).template cast<S>();
+    matX_t<S> H = matX_t<S>::Zero(m.nv(), m.nv());
     for (int i = m.size() - 1; i >= 0; --i) {
         const auto k = static_cast<std::size_t>(i);
         const int lambda = m[i].parent;
@@ -415,7 +462,7 @@ inline Eigen::MatrixXd crba(const model& m, const Eigen::VectorXd& q) {
         const int ni = joint_nv(m[i].kind);
         if (ni == 0) continue;
         const int vi = m.v_index(i);
-        mat6x F = Ic[k] * P.S[k];                                   // F = I^c_i S_i
+        mat6x_t<S> F = Ic[k] * P.S[k];                                   // F = I^c_i S_i
         H.block(vi, vi, ni, ni) = P.S[k].transpose() * F;           // H_ii = S_iᵀ F
         int j = i;
         while (m[j].parent >= 0) {
@@ -437,23 +484,25 @@ inline Eigen::MatrixXd crba(const model& m, const Eigen::VectorXd& q) {
 // the inverse of an n × n matrix, n ≤ 6 (ABA's D_i, symmetric positive definite): Gauss–Jordan
 // elimination with partial pivoting, written out (Eigen's LU would cost seconds of compile time
 // in every test that includes this file)
-inline matn inverse_small(const matn& D) {
+template <class S = double>
+matn_t<S> inverse_small(const arg<matn_t<S>>& D) {
+    using std::abs;
     const Eigen::Index n = D.rows();
-    matn A = D;
-    matn B = matn::Identity(n, n);
+    matn_t<S> A = D;
+    matn_t<S> B = matn_t<S>::Identity(n, n);
     for (Eigen::Index col = 0; col < n; ++col) {
         Eigen::Index pivot = col;
         for (Eigen::Index r = col + 1; r < n; ++r)
-            if (std::abs(A(r, col)) > std::abs(A(pivot, col))) pivot = r;
+            if (abs(A(r, col)) > abs(A(pivot, col))) pivot = r;
         if (A(pivot, col) == 0) throw std::runtime_error("featherstone: singular joint-space inertia D_i");
         A.row(col).swap(A.row(pivot));
         B.row(col).swap(B.row(pivot));
-        const double d = A(col, col);
+        const S d = A(col, col);
         A.row(col) /= d;
         B.row(col) /= d;
         for (Eigen::Index r = 0; r < n; ++r) {
             if (r == col) continue;
-            const double f = A(r, col);
+            const S f = A(r, col);
             A.row(r) -= f * A.row(col);
             B.row(r) -= f * B.row(col);
         }
@@ -461,28 +510,31 @@ inline matn inverse_small(const matn& D) {
     return B;
 }
 
-inline Eigen::VectorXd aba(const model& m, const Eigen::VectorXd& q, const Eigen::VectorXd& v,
-                           const Eigen::VectorXd& tau, const std::vector<vec6>& f_ext = {}) {
+template <class S = double>
+vecX_t<S> aba(const model& m, const arg<vecX_t<S>>& q, const arg<vecX_t<S>>& v,
+              const arg<vecX_t<S>>& tau, const std::vector<vec6>& f_ext = {}) {
+    using vec6s = vec6_t<S>;
+    using mat6s = mat6_t<S>;
     check_sizes(m, q, &v, &f_ext);
     if (tau.size() != m.nv()) throw std::invalid_argument("featherstone: tau has the wrong size");
-    const positions P = compute_positions(m, q);
+    const positions_t<S> P = compute_positions<S>(m, q);
     const auto n = static_cast<std::size_t>(m.size());
-    std::vector<vec6> vel(n), c(n), pA(n), u(n);
-    std::vector<mat6> IA(n);
-    std::vector<mat6x> U(n);
-    std::vector<matn> Dinv(n);
-    std::vector<vecn> uu(n);
+    std::vector<vec6s> vel(n), c(n), pA(n), u(n);
+    std::vector<mat6s> IA(n);
+    std::vector<mat6x_t<S>> U(n);
+    std::vector<matn_t<S>> Dinv(n);
+    std::vector<vecn_t<S>> uu(n);
 
     // pass 1 (outwards): velocities, velocity-product accelerations, isolated-body quantities
     for (int i = 0; i < m.size(); ++i) {
         const auto k = static_cast<std::size_t>(i);
-        const vec6 vJ = P.S[k] * v.segment(m.v_index(i), joint_nv(m[i].kind));
-        const vec6 vp = m[i].parent < 0 ? vec6::Zero() : vel[static_cast<std::size_t>(m[i].parent)];
+        const vec6s vJ = P.S[k] * v.segment(m.v_index(i), joint_nv(m[i].kind));
+        const vec6s vp = m[i].parent < 0 ? vec6s::Zero() : vel[static_cast<std::size_t>(m[i].parent)];
         vel[k] = P.Xup[k] * vp + vJ;
-        c[k] = crm(vel[k]) * vJ;                                    // c_i = c_J + v_i × v_J  (c_J = 0)
-        IA[k] = spatial_inertia(m.bodies[k]);                       // I^A_i = I_i
-        pA[k] = crf(vel[k]) * (IA[k] * vel[k]);                     // p^A_i = v_i ×* I_i v_i − f^x_i
-        if (!f_ext.empty()) pA[k] -= f_ext[k];
+        c[k] = crm<S>(vel[k]) * vJ;                                 // c_i = c_J + v_i × v_J  (c_J = 0)
+        IA[k] = spatial_inertia(m.bodies[k]).template cast<S>();    // I^A_i = I_i
+        pA[k] = crf<S>(vel[k]) * (IA[k] * vel[k]);                  // p^A_i = v_i ×* I_i v_i − f^x_i
+        if (!f_ext.empty()) pA[k] -= f_ext[k].template cast<S>();
     }
     // pass 2 (inwards): articulated-body inertias and bias forces
     for (int i = m.size() - 1; i >= 0; --i) {
@@ -490,12 +542,12 @@ inline Eigen::VectorXd aba(const model& m, const Eigen::VectorXd& q, const Eigen
         const int ni = joint_nv(m[i].kind);
         // the articulated inertia and bias force that body i's subtree passes to its parent
         // through the joint; for a fixed joint (no dofs) I^a_i = I^A_i, p^a_i = p^A_i + I^A_i c_i
-        mat6 Ia = IA[k];
-        vec6 pa = pA[k];
+        mat6s Ia = IA[k];
+        vec6s pa = pA[k];
         if (ni > 0) {
             U[k] = IA[k] * P.S[k];                                  // U_i = I^A_i S_i
-            const matn D = P.S[k].transpose() * U[k];               // D_i = S_iᵀ U_i
-            Dinv[k] = inverse_small(D);
+            const matn_t<S> D = P.S[k].transpose() * U[k];          // D_i = S_iᵀ U_i
+            Dinv[k] = inverse_small<S>(D);
             uu[k] = tau.segment(m.v_index(i), ni) - P.S[k].transpose() * pA[k];   // u_i = τ_i − S_iᵀ p^A_i
             Ia -= U[k] * Dinv[k] * U[k].transpose();                // I^a_i = I^A_i − U D⁻¹ Uᵀ
             pa += U[k] * Dinv[k] * uu[k];
@@ -508,17 +560,17 @@ inline Eigen::VectorXd aba(const model& m, const Eigen::VectorXd& q, const Eigen
         }
     }
     // pass 3 (outwards): accelerations
-    Eigen::VectorXd qdd = Eigen::VectorXd::Zero(m.nv());
-    std::vector<vec6> acc(n);
-    const vec6 a0 = detail::gravity_base(m);
+    vecX_t<S> qdd = vecX_t<S>::Zero(m.nv());
+    std::vector<vec6s> acc(n);
+    const vec6s a0 = detail::gravity_base<S>(m);
     for (int i = 0; i < m.size(); ++i) {
         const auto k = static_cast<std::size_t>(i);
         const int ni = joint_nv(m[i].kind);
-        const vec6 ap = m[i].parent < 0 ? a0 : acc[static_cast<std::size_t>(m[i].parent)];
-        const vec6 a_prime = P.Xup[k] * ap + c[k];                  // a'_i = ^iX_λ a_λ + c_i
+        const vec6s ap = m[i].parent < 0 ? a0 : acc[static_cast<std::size_t>(m[i].parent)];
+        const vec6s a_prime = P.Xup[k] * ap + c[k];                 // a'_i = ^iX_λ a_λ + c_i
         acc[k] = a_prime;
         if (ni > 0) {
-            const vecn qddi = Dinv[k] * (uu[k] - U[k].transpose() * a_prime);   // Table 7.1
+            const vecn_t<S> qddi = Dinv[k] * (uu[k] - U[k].transpose() * a_prime);   // Table 7.1
             qdd.segment(m.v_index(i), ni) = qddi;
             acc[k] += P.S[k] * qddi;                                // a_i = a'_i + S_i q̈_i
         }

@@ -65,12 +65,45 @@ inline constexpr momentum_t momentum{{formula(inertia_detail::momentum_formula),
 inline constexpr operation kinetic_energy{formula([](auto N, auto s) { return bar(lift(s)) & (N ^ lift(s)); }),
                                           scalar_over<2>};
 
-// §6: dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄) for a body moving with velocity s.
-inline constexpr operation inertia_rate{formula([](auto N, auto s) {
-                                            const auto x = lift(s);
-                                            return half * (x * N - N * x) + half * (bar(x) * N - N * bar(x));
-                                        }),
-                                        into<inertia>};
+namespace inertia_detail {
+inline constexpr auto inertia_rate_formula = [](auto N, auto s) {
+    const auto x = lift(s);
+    return half * (x * N - N * x) + half * (bar(x) * N - N * bar(x));
+};
+using inertia_rate_operation = operation<std::remove_const_t<decltype(inertia_rate_formula)>, into_t<inertia>>;
+}  // namespace inertia_detail
+
+// §6: dN/dt = ½(sN − Ns) + ½(s̄N − Ns̄) for a body moving with velocity s (= s ×* N − N s×,
+// Featherstone (2008) §2.14).
+// A body_inertia's rate is again ten parameters of the same form (a rate of zero mass): each
+// point c of the body moves at ċ = ω × c + u for s = (ω, u), so ḣ = ω × h + m u and, from
+// I_o = Σ m(|c|² 1 − c cᵀ),
+//   İ_o = [ω]× I_o − I_o [ω]× + 2(h·u) 1 − (u hᵀ + h uᵀ),   [ω]× I_o − I_o [ω]× = A + Aᵀ for A = [ω]× I_o
+// (I_o symmetric, [ω]× skew), 33m 33a; the formula's element is inertia_rate.formula
+// (tests/articulated_inertia_test.cpp checks the two agree).
+struct inertia_rate_t : inertia_detail::inertia_rate_operation {
+    using inertia_detail::inertia_rate_operation::operator();
+    template <class T>
+    [[nodiscard]] CTGA_ALWAYS_INLINE constexpr body_inertia<T> operator()(const body_inertia<T>& N, const screw<T>& s) const noexcept {
+        using sc = typename body_inertia<T>::scalar;
+        const vec3<T> w{s[0], s[1], s[2]}, u{s[3], s[4], s[5]};
+        const T m = N.mass();
+        const vec3<T> h = N.first_moment();
+        const mat3<T> I = N.inertia_o();
+        const vec3<T> hdot = linear3::add(linear3::cross(w, h), vec3<T>{m * u[0], m * u[1], m * u[2]});
+        const auto A = [&](int i, int j) {  // (ω × I_j)_i, I_j the columns of I
+            const int a = (i + 1) % 3, b = (i + 2) % 3;
+            return w[a] * I[b][j] - w[b] * I[a][j];
+        };
+        const T hu2 = T(2) * linear3::dot(h, u);
+        const auto rate = [&](int i, int j) {
+            return i == j ? T(2) * (A(i, i) - u[i] * h[i]) + hu2 : A(i, j) + A(j, i) - (u[i] * h[j] + h[i] * u[j]);
+        };
+        return {sc{T(0)},      sc{hdot[0]},   sc{hdot[1]},   sc{hdot[2]},   sc{rate(0, 0)},
+                sc{rate(1, 1)}, sc{rate(2, 2)}, sc{rate(0, 1)}, sc{rate(0, 2)}, sc{rate(1, 2)}};
+    }
+};
+inline constexpr inertia_rate_t inertia_rate{{formula(inertia_detail::inertia_rate_formula), into<inertia>}};
 
 // The velocity a mobility gives a co-screw: s = E ∨ (M ∧ P), a screw of Cl(0,3,1).
 struct lowered_screw_t {

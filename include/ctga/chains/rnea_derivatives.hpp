@@ -1,0 +1,223 @@
+// The derivatives of inverse dynamics, ∂τ/∂q, ∂τ/∂q̇ and ∂τ/∂q̈ = H, of a kinematic tree: the
+// analytical recursion of Carpentier and Mansard (RSS 2018), written with screws, co-screws, the
+// bracket and the coadjoint action (paper §3, §5, §6) in the world frame, where a body's
+// derivative columns are one screw for all the bodies it carries.
+//
+// Configuration derivatives are taken in the tangent space: moving joint j's coordinate k by δ
+// moves body j by exp(δ S_jk) in its own frame (X_j(q ⊕ δ) = X_j(q) exp(δ S_jk); for a revolute
+// or prismatic joint q ⊕ δ = q + δ, for a floating joint the motor g exp(δ (ω, v)), the
+// convention of Pinocchio and of Lie-group MPC). In the world frame that moves everything body j
+// carries (its subtree) rigidly by the screw S = S_jk moved out, so every world quantity of the
+// subtree X changes by S acting on it, plus what does not move with it (the parent's velocity
+// v_λ and acceleration a_λ). With Ψ̇ = v_λ × S and Ψ̈ = a_λ × S + v_λ × Ψ̇, for body i carried:
+//
+//   ∂S_i = S × S_i,  ∂N_i = S ×* N_i − N_i S×,  ∂v_i = S × v_i + Ψ̇,  ∂a_i = S × a_i + Ψ̈ + Ψ̇ × v_i
+//   ∂f_i = S ×* f_i + N_i Ψ̈ + B_i Ψ̇,   B_i y = Ṅ_i y + y ×* h_i   (h_i = N_i v_i, Ṅ_i: inertia_rate)
+//
+// (f_i = N_i a_i + v_i ×* h_i − f_ext is equivariant, so S's action passes through; the external
+// wrenches are fixed in their bodies and move with them.) Summed over the subtree, with the
+// composites N^c, Ṅ^c, H^c = Σ h_i, F^c = Σ f_i (plain sums: one frame):
+//
+//   ∂F_j = S ×* F_j + dF,   dF = N^c_j Ψ̈ + Ṅ^c_j Ψ̇ + Ψ̇ ×* H^c_j
+//
+// and τ_k = F_k(S_k) gives the entries: for a dof k of j or of an ancestor, ∂τ_k/∂q_jk = (∂F_j)(S_k)
+// (the own joint's: dF(S_k), the S ×* F term cancelling ∂S_k); for a dof i of a body that j
+// carries, ∂τ_i/∂q_jk = r1_i(Ψ̈) + r2_i(Ψ̇) with r1_i = N^c_i S_i, r2_i = Ṅ^c_i S_i − S_i ×* H^c_i
+// (the transpose of B^c_i, by ⟨y ×* H, s⟩ = −⟨s ×* H, y⟩). Velocities: ∂v_i/∂q̇_jk = S,
+// ∂a_i/∂q̇_jk = S × v_i + Φ with Φ = Ψ̇ + v_j × S (2Ψ̇ for a one-dof joint), so
+//   ∂F_j/∂q̇_jk = Ṅ^c_j S + S ×* H^c_j + N^c_j Φ,    ∂τ_i/∂q̇_jk = r2_i(S) + r1_i(Φ)
+// and H = ∂τ/∂q̈: N^c_j S for the column, r1_i(S) for the rows. Every entry pairs two world
+// screws and co-screws, and only entries of the tree's pattern (tree_matrix.hpp: joints on one
+// branch) are formed; per body the work is a fixed number of screw operations, plus one pairing
+// per pair of joints on a branch.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <type_traits>
+#include <utility>
+
+#include "ctga/chains/frame_jacobian.hpp"
+#include "ctga/chains/passes.hpp"
+#include "ctga/chains/tree.hpp"
+#include "ctga/chains/tree_matrix.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/inertia_transform.hpp"
+#include "ctga/mechanics/momentum.hpp"
+#include "ctga/mechanics/motor.hpp"
+#include "ctga/mechanics/screw.hpp"
+#include "ctga/support/inline.hpp"
+#include "ctga/support/uninitialized.hpp"
+
+namespace ctga::chains {
+
+template <class Tree, class T = double>
+struct rnea_partials {
+    joint_vector<Tree, T> tau;                              // τ(q, q̇, q̈), as rnea
+    tree_matrix<Tree, T, sparsity::branches> dtau_dq;       // ∂τ/∂q (tangent space, nv columns)
+    tree_matrix<Tree, T, sparsity::branches> dtau_dv;       // ∂τ/∂q̇
+    tree_matrix<Tree, T, sparsity::branches> M;             // ∂τ/∂q̈ = H, the mass matrix
+};
+
+namespace algorithm_detail {
+
+// f(integral_constant<dof>) for every dof of body B and of each of its ancestors.
+template <int B, class Tree, class F>
+CTGA_ALWAYS_INLINE constexpr void each_supporting_dof(F&& f) {
+    if constexpr (B >= 0) {
+        constexpr std::size_t b = static_cast<std::size_t>(B);
+        [&]<std::size_t... K>(std::index_sequence<K...>) {
+            (f(std::integral_constant<std::size_t, Tree::v_offset[b] + K>{}), ...);
+        }(std::make_index_sequence<Tree::nv_of[b]>{});
+        each_supporting_dof<Tree::parent[b], Tree>(f);
+    }
+}
+
+// The world-frame numbers of the recursion: per body its composites, per dof its columns.
+template <class Tree, class T>
+struct derivative_pass {
+    std::array<motor_map<T>, Tree::size> pose;
+    std::array<screw<T>, Tree::size> v, a;         // world velocity and acceleration (−g at the world)
+    std::array<body_inertia<T>, Tree::size> Nc, Nc_rate;
+    std::array<coscrew<T>, Tree::size> Hc, Fc;     // composite momentum and force
+    std::array<screw<T>, Tree::nv> S, Psi_d, Psi_dd, Phi;
+
+    explicit constexpr derivative_pass(uninitialized_t)
+        : v(uninitialized_array<screw<T>, Tree::size>()), a(uninitialized_array<screw<T>, Tree::size>()),
+          Hc(uninitialized_array<coscrew<T>, Tree::size>()), Fc(uninitialized_array<coscrew<T>, Tree::size>()),
+          S(uninitialized_array<screw<T>, Tree::nv>()), Psi_d(uninitialized_array<screw<T>, Tree::nv>()),
+          Psi_dd(uninitialized_array<screw<T>, Tree::nv>()), Phi(uninitialized_array<screw<T>, Tree::nv>()) {}
+};
+
+// Forward: world poses, velocities, accelerations, the dofs' S, Ψ̇, Ψ̈, Φ, each body's N, Ṅ,
+// h = N v and f = N a + v ×* h − f_ext, as the composites' first terms.
+template <class Tree, class T>
+constexpr void derivative_forward(derivative_pass<Tree, T>& d, const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                  const T* qd, const T* qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
+    forward<Tree::size>([&](auto body) CTGA_INLINE_LAMBDA {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        constexpr std::size_t o = Tree::v_offset[i];
+        using J = typename Tree::template joint_at<i>;
+        const auto& L = m.template link<i>();
+        const motor_map<T> X = joint_map<i>(m, q);
+        if constexpr (p < 0) d.pose[i] = X;
+        else d.pose[i] = compose(d.pose[p], X);
+        const motor_map<T>& G = d.pose[i];
+        const screw<T> a_p = [&] {
+            if constexpr (p < 0) return screw<T>{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
+            else return d.a[p];
+        }();
+        screw<T> v = [&] {
+            if constexpr (p < 0) return screw<T>{};
+            else return d.v[p];
+        }();
+        screw<T> a = a_p;
+        [&]<std::size_t... K>(std::index_sequence<K...>) {
+            ([&] {
+                const screw<T> S = frame_detail::moved_out(G, J::template subspace<K, T>(L.joint));
+                d.S[o + K] = S;
+                if constexpr (p < 0) {  // the world does not move: Ψ̇ = 0
+                    d.Psi_d[o + K] = screw<T>{};
+                    d.Psi_dd[o + K] = bracket(a_p, S);
+                } else {
+                    d.Psi_d[o + K] = bracket(d.v[p], S);
+                    d.Psi_dd[o + K] = bracket(a_p, S) + bracket(d.v[p], d.Psi_d[o + K]);
+                }
+                // a = a_λ + Σ S q̈ + v × S q̇, and v × S = v_λ × S = Ψ̇
+                v = v + S * qd[o + K];
+                a = a + S * qdd[o + K] + d.Psi_d[o + K] * qd[o + K];
+            }(), ...);
+            // Φ = Ψ̇ + v_j × S: 2Ψ̇ for one dof (v_j × S = v_λ × S), else with the joint's own motion
+            ((d.Phi[o + K] = J::nv == 1 ? screw<T>(d.Psi_d[o + K] + d.Psi_d[o + K]) : screw<T>(d.Psi_d[o + K] + bracket(v, d.S[o + K]))), ...);
+        }(std::make_index_sequence<J::nv>{});
+        d.v[i] = v;
+        d.a[i] = a;
+        const body_inertia<T> N = transform(G, L.inertia);
+        d.Nc[i] = N;
+        d.Nc_rate[i] = inertia_rate(N, v);
+        d.Hc[i] = momentum(N, v);
+        d.Fc[i] = momentum(N, a) + coadjoint(v, d.Hc[i]);
+        if (f_ext) d.Fc[i] = d.Fc[i] - transform(G, (*f_ext)[i]);
+    });
+}
+
+}  // namespace algorithm_detail
+
+struct rnea_derivatives_t {
+    template <class Tree, class T>
+    [[nodiscard]] constexpr rnea_partials<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                              const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd) const noexcept {
+        return run(m, q, qd, qdd, static_cast<const body_wrenches<Tree, T>*>(nullptr));
+    }
+    // … with an external wrench on each body (body frame, about the body's origin), as rnea.
+    template <class Tree, class T>
+    [[nodiscard]] constexpr rnea_partials<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                              const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd,
+                                                              const body_wrenches<Tree, T>& f_ext) const noexcept {
+        return run(m, q, qd, qdd, &f_ext);
+    }
+
+private:
+    template <class Tree, class T>
+    static constexpr rnea_partials<Tree, T> run(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                                const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd,
+                                                const body_wrenches<Tree, T>* f_ext) noexcept {
+        static_assert(!Tree::has_mimic, "ctga::chains::rnea_derivatives: trees with mimic joints are not supported yet");
+        using namespace algorithm_detail;
+        derivative_pass<Tree, T> d{uninitialized};
+        derivative_forward(d, m, q, qd.data(), qdd.data(), f_ext);
+        rnea_partials<Tree, T> out{{}, tree_matrix<Tree, T, sparsity::branches>(uninitialized),
+                                   tree_matrix<Tree, T, sparsity::branches>(uninitialized),
+                                   tree_matrix<Tree, T, sparsity::branches>(uninitialized)};
+        backward<Tree::size>([&](auto body) CTGA_INLINE_LAMBDA {
+            constexpr std::size_t j = decltype(body)::value;
+            constexpr int p = Tree::parent[j];
+            constexpr std::size_t o = Tree::v_offset[j];
+            using J = typename Tree::template joint_at<j>;
+            // body j's composites are complete: its children (later bodies) have added theirs
+            [&]<std::size_t... K>(std::index_sequence<K...>) {
+                ([&] {
+                    constexpr std::size_t c = o + K;
+                    const screw<T>& S = d.S[c];
+                    const coscrew<T> r1 = momentum(d.Nc[j], S);
+                    const coscrew<T> NS = momentum(d.Nc_rate[j], S);
+                    const coscrew<T> SH = coadjoint(S, d.Hc[j]);
+                    const coscrew<T> r2 = NS - SH;
+                    const coscrew<T> dFv = NS + SH + momentum(d.Nc[j], d.Phi[c]);
+                    const coscrew<T> dF = momentum(d.Nc[j], d.Psi_dd[c]) + momentum(d.Nc_rate[j], d.Psi_d[c]) +
+                                          coadjoint(d.Psi_d[c], d.Hc[j]);
+                    out.tau[c] = pairing(d.Fc[j], S);
+                    // the joint's own block
+                    [&]<std::size_t... K2>(std::index_sequence<K2...>) {
+                        ((out.dtau_dq(o + K2, c) = pairing(dF, d.S[o + K2]), out.dtau_dv(o + K2, c) = pairing(dFv, d.S[o + K2]),
+                          out.M(o + K2, c) = pairing(r1, d.S[o + K2])),
+                         ...);
+                    }(std::make_index_sequence<J::nv>{});
+                    // the ancestors' rows of this column, and this row's entries in their columns
+                    const coscrew<T> dFq = dF + coadjoint(S, d.Fc[j]);
+                    each_supporting_dof<p, Tree>([&](auto dof) CTGA_INLINE_LAMBDA {
+                        constexpr std::size_t k = decltype(dof)::value;
+                        out.dtau_dq(k, c) = pairing(dFq, d.S[k]);
+                        out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
+                        out.M(k, c) = out.M(c, k) = pairing(r1, d.S[k]);
+                        out.dtau_dq(c, k) = pairing(r1, d.Psi_dd[k]) + pairing(r2, d.Psi_d[k]);
+                        out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
+                    });
+                }(), ...);
+            }(std::make_index_sequence<J::nv>{});
+            if constexpr (p >= 0) {
+                d.Nc[p] = d.Nc[p] + d.Nc[j];
+                d.Nc_rate[p] = d.Nc_rate[p] + d.Nc_rate[j];
+                d.Hc[p] = d.Hc[p] + d.Hc[j];
+                d.Fc[p] = d.Fc[p] + d.Fc[j];
+            }
+        });
+        return out;
+    }
+};
+// The derivatives of τ = rnea(m, q, q̇, q̈[, f_ext]) with τ itself: rnea_partials.
+inline constexpr rnea_derivatives_t rnea_derivatives{};
+
+}  // namespace ctga::chains

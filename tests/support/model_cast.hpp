@@ -1,0 +1,50 @@
+// A tree's model with another scalar type (dual numbers for derivatives): every parameter
+// converted, U(x). Mimic joints are not converted (no test needs them).
+#pragma once
+
+#include <cstddef>
+#include <utility>
+
+#include <ctga/chains/tree.hpp>
+
+namespace ctga_test {
+
+template <class U, class T, std::size_t N>
+std::array<U, N> cast_array(const std::array<T, N>& x) {
+    std::array<U, N> out{};
+    for (std::size_t k = 0; k < N; ++k) out[k] = U(x[k]);
+    return out;
+}
+
+template <class U, class T>
+ctga::motor_map<U> cast_map(const ctga::motor_map<T>& G) {
+    ctga::motor_map<U> out;
+    for (std::size_t r = 0; r < 3; ++r) out.R[r] = cast_array<U>(G.R[r]);
+    out.t = cast_array<U>(G.t);
+    return out;
+}
+
+template <class U, class Tree, class T>
+ctga::chains::model<Tree, U> model_cast(const ctga::chains::model<Tree, T>& m) {
+    namespace ch = ctga::chains;
+    ch::model<Tree, U> out;
+    out.gravity = cast_array<U>(m.gravity);
+    for (std::size_t k = 0; k < Tree::frame_count; ++k) out.frames[k] = cast_map<U>(m.frames[k]);
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            using J = typename Tree::template joint_at<I>;
+            static_assert(!ch::is_mimic<J>, "model_cast: mimic joints are not converted");
+            const auto& a = m.template link<I>();
+            auto& b = out.template link<I>();
+            b.placement = cast_map<U>(a.placement);
+            using s = typename ctga::body_inertia<U>::scalar;
+            const auto& N = a.inertia;
+            b.inertia = {s{U(N.m[0])},   s{U(N.hx[0])},  s{U(N.hy[0])},  s{U(N.hz[0])},  s{U(N.ixx[0])},
+                         s{U(N.iyy[0])}, s{U(N.izz[0])}, s{U(N.ixy[0])}, s{U(N.ixz[0])}, s{U(N.iyz[0])}};
+            if constexpr (ch::has_run_time_axis<J>) b.joint.u = cast_array<U>(a.joint.u);
+        }(), ...);
+    }(std::make_index_sequence<Tree::size>{});
+    return out;
+}
+
+}  // namespace ctga_test

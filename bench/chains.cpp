@@ -10,6 +10,7 @@
 //   ctga_chains_bench --repeat NAME N        call one kernel N times and exit
 #include <vector>
 
+#include "chains_derivatives.hpp"
 #include "chains_kernels.hpp"
 
 int main(int argc, char** argv) {
@@ -22,6 +23,9 @@ int main(int argc, char** argv) {
     add_chain30(table);
     add_chain30_crba_fk(table);
     add_legged(table);
+    add_derivatives_arm7(table);
+    add_derivatives_chain30(table);
+    add_derivatives_legged(table);
 #endif
     return bench::run(table, argc, argv);
 }

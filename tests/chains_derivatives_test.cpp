@@ -12,6 +12,8 @@
 #include <random>
 
 #include <ctga/chains/algorithms.hpp>
+#include <ctga/chains/aba_derivatives.hpp>
+#include <ctga/chains/minverse.hpp>
 #include <ctga/chains/rnea_derivatives.hpp>
 
 #include "support/catch.hpp"
@@ -33,29 +35,27 @@ using D = ctga_test::dual<chunk>;
 template <class Tree>
 using dense = std::array<std::array<double, Tree::nv>, Tree::nv>;
 
-// ∂τ/∂q and ∂τ/∂q̇ by duals through rnea, columns [c0, c0 + chunk) at a time.
-template <class Tree>
-std::array<dense<Tree>, 2> dual_partials(const draw<Tree>& d, const ch::body_wrenches<Tree>* f) {
+// The partials of y = algorithm(q, q̇, x) (rnea: x = q̈; aba: x = τ) by duals, with respect to q
+// (tangent space), q̇ and x, columns [c0, c0 + chunk) at a time.
+template <class Tree, class Algorithm>
+std::array<dense<Tree>, 3> dual_partials(const draw<Tree>& d, const ch::joint_vector<Tree>& x0, Algorithm algorithm) {
     const ch::model<Tree, D> md = ctga_test::model_cast<D>(d.m);
-    ch::body_wrenches<Tree, D> fd{};
-    if (f)
-        for (std::size_t i = 0; i < Tree::size; ++i)
-            for (std::size_t c = 0; c < 6; ++c) fd[i][c] = D((*f)[i][c]);
-    std::array<dense<Tree>, 2> out{};
-    for (int wrt = 0; wrt < 2; ++wrt)
+    std::array<dense<Tree>, 3> out{};
+    for (std::size_t wrt = 0; wrt < 3; ++wrt)
         for (std::size_t c0 = 0; c0 < Tree::nv; c0 += chunk) {
+            // the seed of dof k: partial k − c0 when in this chunk
+            const auto seed = [&](std::size_t k, double value) { return k >= c0 && k < c0 + chunk ? D::variable(value, k - c0) : D(value); };
             ch::configuration<Tree, D> q{};
-            ch::joint_vector<Tree, D> qd{}, qdd{};
+            ch::joint_vector<Tree, D> qd{}, x{};
             for (std::size_t k = 0; k < Tree::nq; ++k) q[k] = D(d.q[k]);
             for (std::size_t k = 0; k < Tree::nv; ++k) {
-                qd[k] = wrt == 1 && k >= c0 && k < c0 + chunk ? D::variable(d.qd[k], k - c0) : D(d.qd[k]);
-                qdd[k] = D(d.qdd[k]);
+                qd[k] = wrt == 1 ? seed(k, d.qd[k]) : D(d.qd[k]);
+                x[k] = wrt == 2 ? seed(k, x0[k]) : D(x0[k]);
             }
             if (wrt == 0)
                 for (std::size_t b = 0; b < Tree::size; ++b) {
                     const std::size_t qo = Tree::q_offset[b], vo = Tree::v_offset[b];
-                    // the seed of dof k: δ_k with partial k − c0 when in this chunk
-                    const auto delta = [&](std::size_t k) { return k >= c0 && k < c0 + chunk ? D::variable(0.0, k - c0) : D(0.0); };
+                    const auto delta = [&](std::size_t k) { return seed(k, 0.0); };
                     if (Tree::nq_of[b] == 1) q[qo] = q[qo] + delta(vo);
                     if (Tree::nq_of[b] == 8) {  // g (1 + ½(ω, v)): the motor moved in its own frame
                         const ctga::motor<D> g{q[qo], q[qo + 1], q[qo + 2], q[qo + 3], q[qo + 4], q[qo + 5], q[qo + 6], q[qo + 7]};
@@ -65,10 +65,10 @@ std::array<dense<Tree>, 2> dual_partials(const draw<Tree>& d, const ch::body_wre
                         for (std::size_t k = 0; k < 8; ++k) q[qo + k] = ge[k];
                     }
                 }
-            const auto tau = f ? ch::rnea(md, q, qd, qdd, fd) : ch::rnea(md, q, qd, qdd);
+            const auto y = algorithm(md, q, qd, x);
             for (std::size_t i = 0; i < Tree::nv; ++i)
                 for (std::size_t c = c0; c < std::min(c0 + chunk, Tree::nv); ++c)
-                    out[static_cast<std::size_t>(wrt)][i][c] = ctga_test::derivative(tau[i], c - c0);
+                    out[wrt][i][c] = ctga_test::derivative(y[i], c - c0);
         }
     return out;
 }
@@ -94,7 +94,7 @@ void compare(std::uint64_t seed, int draws) {
     using result = ch::rnea_partials<Tree>;
     using matrix = decltype(result::dtau_dq);
     // seen[i][j]: entry (i, j) was non-zero in some draw (by the duals)
-    std::array<std::array<bool, Tree::nv>, Tree::nv> seen{};
+    std::array<std::array<bool, Tree::nv>, Tree::nv> seen{}, fseen{};
     for (int n = 0; n < draws; ++n) {
         const draw<Tree> d = make_draw<Tree>(rng);
         ch::body_wrenches<Tree> f{};
@@ -103,7 +103,12 @@ void compare(std::uint64_t seed, int draws) {
         for (int with_f = 0; with_f < 2; ++with_f) {
             INFO("bodies " << Tree::size << ", nv " << Tree::nv << ", draw " << n << (with_f ? ", external wrenches" : ""));
             const result r = with_f ? ch::rnea_derivatives(d.m, d.q, d.qd, d.qdd, f) : ch::rnea_derivatives(d.m, d.q, d.qd, d.qdd);
-            const auto ref = dual_partials(d, with_f ? &f : nullptr);
+            ch::body_wrenches<Tree, D> fd{};
+            for (std::size_t i = 0; i < Tree::size; ++i)
+                for (std::size_t c = 0; c < 6; ++c) fd[i][c] = D(with_f ? f[i][c] : 0.0);
+            const auto ref = dual_partials(d, d.qdd, [&](const auto& md, const auto& q, const auto& qd, const auto& qdd) {
+                return ch::rnea(md, q, qd, qdd, fd);
+            });
             const double sq = max_abs<Tree>(ref[0]), sv = max_abs<Tree>(ref[1]);
             CHECK(max_abs_diff<Tree>(r.dtau_dq, ref[0]) <= 1e-12 * sq);
             CHECK(max_abs_diff<Tree>(r.dtau_dv, ref[1]) <= 1e-12 * sv);
@@ -113,6 +118,33 @@ void compare(std::uint64_t seed, int draws) {
             double e = 0, s = 1;
             for (std::size_t k = 0; k < Tree::nv; ++k) e = std::max(e, std::abs(r.tau[k] - tau[k])), s = std::max(s, std::abs(tau[k]));
             CHECK(e <= 1e-12 * s);
+            // forward dynamics at τ = ID(q̈): ∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ = H⁻¹
+            const auto fwd = with_f ? ch::aba_derivatives(d.m, d.q, d.qd, tau, f) : ch::aba_derivatives(d.m, d.q, d.qd, tau);
+            const auto fref = dual_partials(d, tau, [&](const auto& md, const auto& q, const auto& qd, const auto& t) {
+                return ch::aba(md, q, qd, t, fd);
+            });
+            CHECK(max_abs_diff<Tree>(fwd.dqdd_dq, fref[0]) <= 1e-12 * max_abs<Tree>(fref[0]));
+            CHECK(max_abs_diff<Tree>(fwd.dqdd_dv, fref[1]) <= 1e-12 * max_abs<Tree>(fref[1]));
+            CHECK(max_abs_diff<Tree>(fwd.Minv, fref[2]) <= 1e-12 * max_abs<Tree>(fref[2]));
+            double q_err = 0;
+            for (std::size_t k = 0; k < Tree::nv; ++k) q_err = std::max(q_err, std::abs(fwd.qdd[k] - d.qdd[k]));
+            CHECK(q_err <= 1e-12 * max_abs<Tree>(fref[2]) * s);
+            // H⁻¹ H = 1, minverse alone
+            const auto Minv = ch::minverse(d.m, d.q);
+            double id_err = 0;
+            for (std::size_t i = 0; i < Tree::nv; ++i)
+                for (std::size_t j = 0; j < Tree::nv; ++j) {
+                    double x = i == j ? -1.0 : 0.0;
+                    for (std::size_t k = 0; k < Tree::nv; ++k) x += Minv(i, k) * H[k][j];
+                    id_err = std::max(id_err, std::abs(x));
+                }
+            CHECK(id_err <= 1e-12 * max_abs<Tree>(fref[2]) * max_abs<Tree>(H));
+            for (std::size_t i = 0; i < Tree::nv; ++i)
+                for (std::size_t j = 0; j < Tree::nv; ++j) {
+                    INFO("entry " << i << ", " << j);
+                    if (fref[0][i][j] != 0 || fref[1][i][j] != 0 || fref[2][i][j] != 0) CHECK(decltype(fwd.Minv)::structural(i, j));
+                    fseen[i][j] = fseen[i][j] || fref[0][i][j] != 0 || fref[2][i][j] != 0;
+                }
             for (std::size_t i = 0; i < Tree::nv; ++i)
                 for (std::size_t j = 0; j < Tree::nv; ++j) {
                     const bool nonzero = ref[0][i][j] != 0 || ref[1][i][j] != 0 || H[i][j] != 0;
@@ -129,6 +161,13 @@ void compare(std::uint64_t seed, int draws) {
                 INFO("structural entry " << i << ", " << j << " never non-zero");
                 CHECK(seen[i][j]);
             }
+    using fmatrix = decltype(ch::aba_partials<Tree>::Minv);
+    for (std::size_t i = 0; i < Tree::nv; ++i)
+        for (std::size_t j = 0; j < Tree::nv; ++j)
+            if (fmatrix::structural(i, j)) {
+                INFO("structural entry of ∂q̈ " << i << ", " << j << " never non-zero");
+                CHECK(fseen[i][j]);
+            }
 }
 
 // The legged shape: a floating trunk with four legs (hip x, thigh y, knee y), as the benchmark's
@@ -143,7 +182,7 @@ static_assert(decltype(ch::rnea_partials<legged>::dtau_dq)::nonzeros == 18 * 18 
 
 }  // namespace
 
-#define DERIVATIVES_CASE(name) TEST_CASE("rnea_derivatives: ∂τ/∂q, ∂τ/∂q̇, H = dual numbers through rnea, " name)
+#define DERIVATIVES_CASE(name) TEST_CASE("rnea_derivatives, aba_derivatives, minverse = dual numbers through rnea and aba, " name)
 #if CTGA_TEST_PART_HOLDS(0)
 DERIVATIVES_CASE("1 to 7 bodies") {
     compare<random_structure<1, 1, false>::type>(21, 10);

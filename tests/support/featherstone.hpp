@@ -104,8 +104,8 @@ using mat6 = mat6_t<double>;
 using mat6x = mat6x_t<double>;
 using matn = matn_t<double>;
 using vecn = vecn_t<double>;
-// a parameter of type arg<T> does not take part in deducing S (see "The scalar" above)
-template <class T> using arg = std::type_identity_t<T>;
+// a parameter of type nondeduced<T> does not take part in deducing S (see "The scalar" above)
+template <class T> using nondeduced = std::type_identity_t<T>;
 
 // ---------------------------------------------------------------------------------------------
 // The model.
@@ -176,7 +176,7 @@ struct model {
 
 // x× as a matrix: skew(x) y = x × y
 template <class S = double>
-mat3_t<S> skew(const arg<vec3_t<S>>& x) {
+mat3_t<S> skew(const nondeduced<vec3_t<S>>& x) {
     mat3_t<S> m;
     m << 0, -x.z(), x.y(),
          x.z(), 0, -x.x(),
@@ -186,7 +186,7 @@ mat3_t<S> skew(const arg<vec3_t<S>>& x) {
 
 // motion cross product  m× = [[ω×, 0], [v×, ω×]]                                  (RBDA ch. 2)
 template <class S = double>
-mat6_t<S> crm(const arg<vec6_t<S>>& m) {
+mat6_t<S> crm(const nondeduced<vec6_t<S>>& m) {
     mat6_t<S> r = mat6_t<S>::Zero();
     r.template topLeftCorner<3, 3>() = skew<S>(m.template head<3>());
     r.template bottomLeftCorner<3, 3>() = skew<S>(m.template tail<3>());
@@ -196,11 +196,11 @@ mat6_t<S> crm(const arg<vec6_t<S>>& m) {
 
 // force cross product  m×* = −(m×)ᵀ = [[ω×, v×], [0, ω×]]                          (RBDA ch. 2)
 template <class S = double>
-mat6_t<S> crf(const arg<vec6_t<S>>& m) { return -crm<S>(m).transpose(); }
+mat6_t<S> crf(const nondeduced<vec6_t<S>>& m) { return -crm<S>(m).transpose(); }
 
 // ^B X_A for B at r (A coordinates) with E: A coords → B coords:  rot(E) xlt(r)    (RBDA ch. 2, "coordinate transforms")
 template <class S = double>
-mat6_t<S> plucker(const arg<mat3_t<S>>& E, const arg<vec3_t<S>>& r) {
+mat6_t<S> plucker(const nondeduced<mat3_t<S>>& E, const nondeduced<vec3_t<S>>& r) {
     mat6_t<S> X = mat6_t<S>::Zero();
     X.template topLeftCorner<3, 3>() = E;
     X.template bottomLeftCorner<3, 3>() = -E * skew<S>(r);
@@ -237,7 +237,7 @@ inline mat6 spatial_inertia(const body& b) { return spatial_inertia(b.mass, b.co
 
 // rotation by angle θ about the unit axis u (Rodrigues): R = 1 + sin θ u× + (1 − cos θ) u×²
 template <class S = double>
-mat3_t<S> axis_angle(const vec3& u, const arg<S>& theta) {
+mat3_t<S> axis_angle(const vec3& u, const nondeduced<S>& theta) {
     using std::cos;
     using std::sin;
     const mat3_t<S> U = skew(u).template cast<S>();
@@ -246,7 +246,7 @@ mat3_t<S> axis_angle(const vec3& u, const arg<S>& theta) {
 
 // the rotation matrix of the unit Hamilton quaternion (w, x, y, z) (normalised here), R v = q v q*
 template <class S = double>
-mat3_t<S> quaternion_rotation(arg<S> w, arg<S> x, arg<S> y, arg<S> z) {
+mat3_t<S> quaternion_rotation(nondeduced<S> w, nondeduced<S> x, nondeduced<S> y, nondeduced<S> z) {
     using std::sqrt;
     const S n = sqrt(w * w + x * x + y * y + z * z);
     w /= n; x /= n; y /= n; z /= n;
@@ -303,7 +303,7 @@ joint_state_t<S> jcalc(const body& b, const S* q) {
 inline mat6 tree_transform(const body& b) { return plucker(b.rotation.transpose(), b.translation); }
 
 template <class Vector>
-void check_sizes(const model& m, const Vector& q, const arg<Vector>* v,
+void check_sizes(const model& m, const Vector& q, const nondeduced<Vector>* v,
                  const std::vector<vec6>* f_ext = nullptr) {
     for (int i = 0; i < m.size(); ++i)
         if (m[i].parent < -1 || m[i].parent >= i)
@@ -327,7 +327,7 @@ struct positions_t {
 using positions = positions_t<double>;
 
 template <class S = double>
-positions_t<S> compute_positions(const model& m, const arg<vecX_t<S>>& q) {
+positions_t<S> compute_positions(const model& m, const nondeduced<vecX_t<S>>& q) {
     check_sizes(m, q, nullptr);
     const auto n = static_cast<std::size_t>(m.size());
     positions_t<S> P;
@@ -373,8 +373,8 @@ namespace detail {
 //   v_i = ^iX_λ v_λ + S_i q̇_i,   a_i = ^iX_λ a_λ + S_i q̈_i + c_J + v_i × S_i q̇_i,
 // with v_world = 0 and a_world = a0 (world coordinates).
 template <class S>
-void forward_pass(const model& m, const positions_t<S>& P, const arg<vecX_t<S>>& v,
-                  const arg<vecX_t<S>>& a, const arg<vec6_t<S>>& a0,
+void forward_pass(const model& m, const positions_t<S>& P, const nondeduced<vecX_t<S>>& v,
+                  const nondeduced<vecX_t<S>>& a, const nondeduced<vec6_t<S>>& a0,
                   std::vector<vec6_t<S>>& vel, std::vector<vec6_t<S>>& acc) {
     using vec6s = vec6_t<S>;
     const auto n = static_cast<std::size_t>(m.size());
@@ -419,8 +419,8 @@ inline kinematics fk(const model& m, const Eigen::VectorXd& q, const Eigen::Vect
 // Inverse dynamics: the recursive Newton–Euler algorithm (RBDA Table 5.1).
 
 template <class S = double>
-vecX_t<S> rnea(const model& m, const arg<vecX_t<S>>& q, const arg<vecX_t<S>>& v,
-               const arg<vecX_t<S>>& a, const std::vector<vec6>& f_ext = {}) {
+vecX_t<S> rnea(const model& m, const nondeduced<vecX_t<S>>& q, const nondeduced<vecX_t<S>>& v,
+               const nondeduced<vecX_t<S>>& a, const std::vector<vec6>& f_ext = {}) {
     check_sizes(m, q, &v, &f_ext);
     if (a.size() != m.nv()) throw std::invalid_argument("featherstone: a has the wrong size");
     const positions_t<S> P = compute_positions<S>(m, q);
@@ -448,7 +448,7 @@ vecX_t<S> rnea(const model& m, const arg<vecX_t<S>>& q, const arg<vecX_t<S>>& v,
 // The joint-space inertia matrix: the composite-rigid-body algorithm (RBDA Table 6.2).
 
 template <class S = double>
-matX_t<S> crba(const model& m, const arg<vecX_t<S>>& q) {
+matX_t<S> crba(const model& m, const nondeduced<vecX_t<S>>& q) {
     const positions_t<S> P = compute_positions<S>(m, q);
     const auto n = static_cast<std::size_t>(m.size());
     std::vector<mat6_t<S>> Ic(n);
@@ -485,7 +485,7 @@ matX_t<S> crba(const model& m, const arg<vecX_t<S>>& q) {
 // elimination with partial pivoting, written out (Eigen's LU would cost seconds of compile time
 // in every test that includes this file)
 template <class S = double>
-matn_t<S> inverse_small(const arg<matn_t<S>>& D) {
+matn_t<S> inverse_small(const nondeduced<matn_t<S>>& D) {
     using std::abs;
     const Eigen::Index n = D.rows();
     matn_t<S> A = D;
@@ -511,8 +511,8 @@ matn_t<S> inverse_small(const arg<matn_t<S>>& D) {
 }
 
 template <class S = double>
-vecX_t<S> aba(const model& m, const arg<vecX_t<S>>& q, const arg<vecX_t<S>>& v,
-              const arg<vecX_t<S>>& tau, const std::vector<vec6>& f_ext = {}) {
+vecX_t<S> aba(const model& m, const nondeduced<vecX_t<S>>& q, const nondeduced<vecX_t<S>>& v,
+              const nondeduced<vecX_t<S>>& tau, const std::vector<vec6>& f_ext = {}) {
     using vec6s = vec6_t<S>;
     using mat6s = mat6_t<S>;
     check_sizes(m, q, &v, &f_ext);

@@ -14,13 +14,16 @@
 //   renormalize(q)     each floating motor renormalised
 // so lie_rk4 and implicit_midpoint move a floating base on the group (its motor stays a unit
 // motor), rk4 moves it in the flat coordinates and renormalises; acceleration(q, q̇) is
-// forward dynamics by the articulated body algorithm with the actuation's τ(q, q̇).
+// forward dynamics by the articulated body algorithm with the actuation's τ(q, q̇), and
+// acceleration_partials its derivatives (aba_derivatives), for the implicit midpoint's Newton
+// iteration.
 #pragma once
 
 #include <array>
 #include <cstddef>
 
 #include "ctga/chains/aba.hpp"
+#include "ctga/chains/aba_derivatives.hpp"
 #include "ctga/chains/checked_call.hpp"
 #include "ctga/chains/energy.hpp"
 #include "ctga/chains/passes.hpp"
@@ -91,6 +94,17 @@ struct tree_motion {
 
     [[nodiscard]] constexpr screw_type acceleration(const motor_type& q, const screw_type& qd) const noexcept {
         return {aba(m, q.x, qd.x, actuation(q.x, qd.x))};
+    }
+    // ∂q̈/∂q (tangent space: a floating motor moved by g exp(δ), as the integrators move it) and
+    // ∂q̈/∂q̇ at the actuation's τ(q, q̇), held fixed (aba_derivatives.hpp): the implicit midpoint's
+    // Newton matrix. (An actuation that depends on the state is left out of them: its feedback
+    // only slows Newton's convergence to linear.)
+    struct partials {
+        std::array<std::array<T, Tree::nv>, Tree::nv> configuration, velocity;
+    };
+    [[nodiscard]] constexpr partials acceleration_partials(const motor_type& q, const screw_type& qd) const noexcept {
+        const aba_partials<Tree, T> d = aba_derivatives(m, q.x, qd.x, actuation(q.x, qd.x));
+        return {d.dqdd_dq.dense(), d.dqdd_dv.dense()};
     }
 
     [[nodiscard]] constexpr motor_type motor_rate(const motor_type& q, const screw_type& qd) const noexcept {

@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <limits>
 #include <optional>
+#include <tuple>
 #include <utility>
 
 #include "ctga/integrators/model.hpp"
@@ -135,17 +136,22 @@ struct lie_rk4 {
 };
 
 namespace integrator_detail {
-// A 6×6 matrix factored once (P A = L U, partial pivoting) and solved for several right-hand sides.
-template <class T>
-struct lu6 {
-    std::array<std::array<T, 6>, 6> a{};  // L below the diagonal (unit diagonal), U on and above
-    std::array<std::size_t, 6> row{0, 1, 2, 3, 4, 5};
+// An N×N matrix factored once (P A = L U, partial pivoting) and solved for several right-hand sides.
+template <class T, std::size_t N>
+struct lu {
+    static constexpr std::size_t size = N;
+    std::array<std::array<T, N>, N> a{};  // L below the diagonal (unit diagonal), U on and above
+    std::array<std::size_t, N> row = [] {
+        std::array<std::size_t, N> r{};
+        for (std::size_t i = 0; i < N; ++i) r[i] = i;
+        return r;
+    }();
     bool singular = false;
 
-    constexpr explicit lu6(const std::array<std::array<T, 6>, 6>& A) noexcept : a(A) {
-        for (std::size_t c = 0; c < 6; ++c) {
+    constexpr explicit lu(const std::array<std::array<T, N>, N>& A) noexcept : a(A) {
+        for (std::size_t c = 0; c < N; ++c) {
             std::size_t p = c;
-            for (std::size_t r = c + 1; r < 6; ++r)
+            for (std::size_t r = c + 1; r < N; ++r)
                 if ((a[r][c] < T(0) ? -a[r][c] : a[r][c]) > (a[p][c] < T(0) ? -a[p][c] : a[p][c])) p = r;
             if (!(a[p][c] != T(0))) {
                 singular = true;
@@ -153,50 +159,92 @@ struct lu6 {
             }
             std::swap(a[p], a[c]);
             std::swap(row[p], row[c]);
-            for (std::size_t r = c + 1; r < 6; ++r) {
+            for (std::size_t r = c + 1; r < N; ++r) {
                 a[r][c] = a[r][c] / a[c][c];
-                for (std::size_t k = c + 1; k < 6; ++k) a[r][k] = a[r][k] - a[r][c] * a[c][k];
+                for (std::size_t k = c + 1; k < N; ++k) a[r][k] = a[r][k] - a[r][c] * a[c][k];
             }
         }
     }
     // A⁻¹ b
-    [[nodiscard]] constexpr std::array<T, 6> solve(const std::array<T, 6>& b) const noexcept {
-        std::array<T, 6> x{};
-        for (std::size_t i = 0; i < 6; ++i) {
+    [[nodiscard]] constexpr std::array<T, N> solve(const std::array<T, N>& b) const noexcept {
+        std::array<T, N> x{};
+        for (std::size_t i = 0; i < N; ++i) {
             T v = b[row[i]];
             for (std::size_t k = 0; k < i; ++k) v = v - a[i][k] * x[k];
             x[i] = v;
         }
-        for (std::size_t i = 6; i-- > 0;) {
+        for (std::size_t i = N; i-- > 0;) {
             T v = x[i];
-            for (std::size_t k = i + 1; k < 6; ++k) v = v - a[i][k] * x[k];
+            for (std::size_t k = i + 1; k < N; ++k) v = v - a[i][k] * x[k];
             x[i] = v / a[i][i];
         }
         return x;
     }
 };
-// A model that gives ∂a/∂s (6 × 6, row-major): the implicit midpoint's Newton iteration uses it.
+// A model that gives ∂a/∂s (N × N, row-major, N the screw's dimension): the implicit midpoint's
+// Newton iteration uses it.
 template <class M>
-concept with_acceleration_jacobian =
-    requires(const M& m, const typename M::motor_type& g, const typename M::screw_type& s) {
-        { m.acceleration_jacobian(g, s) } -> std::convertible_to<std::array<std::array<typename M::scalar_type, 6>, 6>>;
-    };
+concept with_acceleration_jacobian = requires(const M& m, const typename M::motor_type& g, const typename M::screw_type& s) {
+    { m.acceleration_jacobian(g, s)[0][0] } -> std::convertible_to<typename M::scalar_type>;
+};
+// A model that gives ∂a/∂g as well (in the tangent space: g moved by exp(δ) in the model's frame)
+// with ∂a/∂s, as .configuration and .velocity (a kinematic tree: chains/motion.hpp, from
+// aba_derivatives): the pose's dependence on s₁ enters the Newton matrix too.
+template <class M>
+concept with_acceleration_partials = requires(const M& m, const typename M::motor_type& g, const typename M::screw_type& s) {
+    { m.acceleration_partials(g, s).configuration[0][0] } -> std::convertible_to<typename M::scalar_type>;
+    { m.acceleration_partials(g, s).velocity[0][0] } -> std::convertible_to<typename M::scalar_type>;
+};
+// The Newton matrix of the midpoint equation F(s₁) = s₁ − s₀ − h a(g_m, s_m): with s_m = ½(s₀ + s₁)
+// and g_m = g₀ moved by exp(½ h s_m), ∂F/∂s₁ = 1 − h (½ ∂a/∂s + ¼ h ∂a/∂g) (∂a/∂g at g_m, the
+// exponential's derivative taken as 1: O(h) off, which Newton's method absorbs).
+template <motion_model M>
+constexpr auto newton_matrix(const M& model, const typename M::motor_type& g_m, const typename M::screw_type& s_m,
+                             const typename M::scalar_type& h) {
+    using T = typename M::scalar_type;
+    if constexpr (with_acceleration_partials<M>) {
+        const auto p = model.acceleration_partials(g_m, s_m);
+        auto J = p.velocity;
+        for (std::size_t r = 0; r < J.size(); ++r)
+            for (std::size_t c = 0; c < J.size(); ++c)
+                J[r][c] = (r == c ? T(1) : T(0)) - h * (J[r][c] / T(2) + h / T(4) * p.configuration[r][c]);
+        return J;
+    } else {
+        auto J = model.acceleration_jacobian(g_m, s_m);
+        for (std::size_t r = 0; r < J.size(); ++r)
+            for (std::size_t c = 0; c < J.size(); ++c) J[r][c] = (r == c ? T(1) : T(0)) - h / T(2) * J[r][c];
+        return J;
+    }
+}
+// The factored Newton matrix's type (none for a model without derivatives).
+template <class M, bool = with_acceleration_jacobian<M> || with_acceleration_partials<M>>
+struct newton_factor {
+    using type = lu<typename M::scalar_type, 1>;  // never formed
+};
+template <class M>
+struct newton_factor<M, true> {
+    using matrix = decltype(newton_matrix(std::declval<const M&>(), std::declval<const typename M::motor_type&>(),
+                                          std::declval<const typename M::screw_type&>(),
+                                          std::declval<const typename M::scalar_type&>()));
+    using type = lu<typename M::scalar_type, std::tuple_size_v<matrix>>;
+};
 }  // namespace integrator_detail
 
 // How the implicit midpoint solves its equation for s₁.
 enum class implicit_solver {
-    newton,       // Newton's method with the model's exact ∂a/∂s (ctga::jacobian of the EOM);
-                  // the fixed-point iteration for a model that does not give it
+    newton,       // Newton's method with the model's exact ∂a/∂s (ctga::jacobian of the EOM; a
+                  // tree's ∂q̈/∂(q, q̇) from aba_derivatives); the fixed-point iteration for a model
+                  // that gives neither
     fixed_point,  // s₁ ← s₀ + h a(g_m, s_m), repeated
 };
 
 // s₁ = s₀ + h a(g_m, s_m), s_m = ½(s₀ + s₁), g_m = the pose moved by exp(½ h s_m), and
 // g₁ = the pose moved by exp(h s_m). The implicit equation F(s₁) = s₁ − s₀ − h a(g_m, s_m) = 0
 // is solved from an explicit Euler guess, by default with (simplified) Newton's method,
-//   s₁ ← s₁ − (1 − ½ h ∂a/∂s(g_m, s_m))⁻¹ F(s₁),  the matrix taken at the first midpoint and
-// again only when an update contracts by less than ½
-// (g_m's dependence on s₁ left out of the matrix: it does not enter a free body's body-frame
-// acceleration, and elsewhere it only slows the convergence to linear), or by the fixed-point
+//   s₁ ← s₁ − (∂F/∂s₁)⁻¹ F(s₁),  ∂F/∂s₁ = 1 − ½ h ∂a/∂s (− ¼ h² ∂a/∂g, for a model that gives it:
+// a tree), the matrix taken at the first midpoint and again only when an update contracts by less
+// than ½ (without ∂a/∂g, g_m's dependence on s₁ is left out: it does not enter a free body's
+// body-frame acceleration, and elsewhere it only slows the convergence to linear), or by the fixed-point
 // iteration s₁ ← s₀ + h a(g_m, s_m), which contracts only when h‖∂a/∂s‖ < 2 (for h|ω| below about
 // 1). Either stops when an update changes s₁ by at most ε (relative, in max |component|), or when
 // it stalls at the rounding level; otherwise the step reports did_not_converge. `iterations`,
@@ -219,27 +267,25 @@ struct implicit_midpoint {
         };
         screw_t s1(x.s + h * model.acceleration(x.g, x.s));
         T previous = std::numeric_limits<T>::infinity();
-        std::optional<integrator_detail::lu6<T>> newton_matrix;  // 1 − ½ h ∂a/∂s, factored
+        using factor = typename integrator_detail::newton_factor<M>::type;
+        std::optional<factor> newton;  // ∂F/∂s₁, factored
         for (int i = 0; i < max_iterations; ++i) {
             const screw_t s_m(T(1) / T(2) * (x.s + s1));
             const auto g_m = midpoint_pose(s_m, T(1) / T(2));
             screw_t next(x.s + h * model.acceleration(g_m, s_m));  // the fixed-point update
-            if constexpr (integrator_detail::with_acceleration_jacobian<M>) {
+            if constexpr (integrator_detail::with_acceleration_jacobian<M> || integrator_detail::with_acceleration_partials<M>) {
                 if (solver == implicit_solver::newton) {
-                    // Newton: (1 − ½ h A) Δ = s₀ + h a − s₁ = next − s₁, with A = ∂a/∂s taken at the
-                    // first midpoint and factored once (a simplified Newton method: A moves by O(h)
+                    // Newton: ∂F/∂s₁ Δ = s₀ + h a − s₁ = next − s₁, the matrix taken at the first
+                    // midpoint and factored once (a simplified Newton method: it moves by O(h)
                     // within the step), and taken again where an update contracts by less than ½
-                    if (!newton_matrix) {
-                        std::array<std::array<T, 6>, 6> J = model.acceleration_jacobian(g_m, s_m);
-                        for (std::size_t r = 0; r < 6; ++r)
-                            for (std::size_t c = 0; c < 6; ++c) J[r][c] = (r == c ? T(1) : T(0)) - h / T(2) * J[r][c];
-                        newton_matrix.emplace(J);
-                        if (newton_matrix->singular) break;
+                    if (!newton) {
+                        newton.emplace(integrator_detail::newton_matrix(model, g_m, s_m, h));
+                        if (newton->singular) break;
                     }
-                    std::array<T, 6> residual{};
-                    for (std::size_t r = 0; r < 6; ++r) residual[r] = next[r] - s1[r];
-                    const std::array<T, 6> delta = newton_matrix->solve(residual);
-                    for (std::size_t r = 0; r < 6; ++r) next[r] = s1[r] + delta[r];
+                    std::array<T, factor::size> residual{};
+                    for (std::size_t r = 0; r < residual.size(); ++r) residual[r] = next[r] - s1[r];
+                    const auto delta = newton->solve(residual);
+                    for (std::size_t r = 0; r < residual.size(); ++r) next[r] = s1[r] + delta[r];
                 }
             }
             if (!model.finite(x.g, next)) break;  // the iteration diverged
@@ -254,7 +300,7 @@ struct implicit_midpoint {
                 return {y, error_code::none};
             }
             // a slow contraction: the matrix of the first midpoint no longer fits; take it anew
-            if (change > previous / T(2)) newton_matrix.reset();
+            if (change > previous / T(2)) newton.reset();
             previous = change;
         }
         if (iterations) *iterations += max_iterations;

@@ -2,8 +2,8 @@
 // (Carpentier and Mansard, RSS 2018). Forward dynamics solves ID(q, q̇, q̈) = τ, so differentiating
 // the identity ID(q, q̇, FD(q, q̇, τ)) = τ gives
 //   ∂q̈/∂τ = H⁻¹,   ∂q̈/∂q = −H⁻¹ ∂τ/∂q,   ∂q̈/∂q̇ = −H⁻¹ ∂τ/∂q̇
-// with ∂τ/∂(q, q̇) of inverse dynamics (rnea_derivatives.hpp) at q̈ = FD(q, q̇, τ) (aba.hpp) and H⁻¹
-// by its own recursion (minverse.hpp). Configuration derivatives are in the tangent space, as
+// with ∂τ/∂(q, q̇) of inverse dynamics (rnea_derivatives.hpp) at q̈ = FD(q, q̇, τ) = H⁻¹(τ − b), H⁻¹
+// by its own recursion (minverse.hpp) and b = ID(q, q̇, 0) the bias forces (rnea.hpp). Configuration derivatives are in the tangent space, as
 // rnea_derivatives'. The products run over the structural entries only: H⁻¹ has the tree's
 // components' pattern, ∂τ its branches', so ∂q̈ has the components' (tree_matrix.hpp).
 #pragma once
@@ -11,7 +11,7 @@
 #include <cstddef>
 #include <utility>
 
-#include "ctga/chains/aba.hpp"
+#include "ctga/chains/rnea.hpp"
 #include "ctga/chains/minverse.hpp"
 #include "ctga/chains/rnea_derivatives.hpp"
 #include "ctga/chains/tree_matrix.hpp"
@@ -27,23 +27,25 @@ struct aba_partials {
 };
 
 namespace algorithm_detail {
-// −A B for A of the components' pattern and B of the branches': Σ_k over the k where both have
-// structural entries (compile-time lists).
+// −A B for A of the components' pattern and B of the branches', row by row: row i of the product
+// is −Σ_k A(i, k) B(k, ·) over the k where A's row has structural entries (a compile-time
+// list), each a contiguous multiply-add over B's row, which the compiler vectorises; B's zeros
+// are stored zeros, so the row stays in the components' pattern.
 template <class Tree, class T>
 constexpr tree_matrix<Tree, T, sparsity::components> minus_product(const tree_matrix<Tree, T, sparsity::components>& A,
                                                                    const tree_matrix<Tree, T, sparsity::branches>& B) noexcept {
     using C = tree_matrix<Tree, T, sparsity::components>;
-    using Br = tree_matrix<Tree, T, sparsity::branches>;
     constexpr std::size_t n = Tree::nv;
-    C out(uninitialized);
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j) {
-            if (!C::pattern[i][j]) continue;
-            T x(0);
-            for (std::size_t k = 0; k < n; ++k)
-                if (C::pattern[i][k] && Br::pattern[k][j]) x -= A(i, k) * B(k, j);
-            out(i, j) = x;
+    C out;
+    for (std::size_t i = 0; i < n; ++i) {
+        T* row = out.data() + i * n;
+        for (std::size_t k = 0; k < n; ++k) {
+            if (!C::pattern[i][k]) continue;
+            const T a = A(i, k);
+            const T* b = B.data() + k * n;
+            for (std::size_t j = 0; j < n; ++j) row[j] -= a * b[j];
         }
+    }
     return out;
 }
 }  // namespace algorithm_detail
@@ -52,24 +54,30 @@ struct aba_derivatives_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr aba_partials<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                              const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau) const noexcept {
-        const joint_vector<Tree, T> qdd = aba(m, q, qd, tau);
-        return from(m, q, qdd, minverse(m, q), rnea_derivatives(m, q, qd, qdd));
+        return run(m, q, qd, tau, static_cast<const body_wrenches<Tree, T>*>(nullptr));
     }
     // … with an external wrench on each body (body frame, about the body's origin), as aba.
     template <class Tree, class T>
     [[nodiscard]] constexpr aba_partials<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                              const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
                                                              const body_wrenches<Tree, T>& f_ext) const noexcept {
-        const joint_vector<Tree, T> qdd = aba(m, q, qd, tau, f_ext);
-        return from(m, q, qdd, minverse(m, q), rnea_derivatives(m, q, qd, qdd, f_ext));
+        return run(m, q, qd, tau, &f_ext);
     }
 
 private:
+    // H⁻¹ first; then q̈ = H⁻¹ (τ − b) with b = ID(q, q̇, 0) (the bias forces, rnea), and ∂τ at q̈.
     template <class Tree, class T>
-    static constexpr aba_partials<Tree, T> from(const model<Tree, T>&, const configuration<Tree, T>&,
-                                                const joint_vector<Tree, T>& qdd,
-                                                const tree_matrix<Tree, T, sparsity::components>& Minv,
-                                                const rnea_partials<Tree, T>& id) noexcept {
+    static constexpr aba_partials<Tree, T> run(const model<Tree, T>& m, const configuration<Tree, T>& q,
+                                               const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
+                                               const body_wrenches<Tree, T>* f_ext) noexcept {
+        constexpr std::size_t n = Tree::nv;
+        const tree_matrix<Tree, T, sparsity::components> Minv = minverse(m, q);
+        const joint_vector<Tree, T> zero{};
+        const joint_vector<Tree, T> b = f_ext ? rnea(m, q, qd, zero, *f_ext) : rnea(m, q, qd, zero);
+        joint_vector<Tree, T> qdd{};
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t k = 0; k < n; ++k) qdd[i] += Minv(i, k) * (tau[k] - b[k]);
+        const rnea_partials<Tree, T> id = f_ext ? rnea_derivatives(m, q, qd, qdd, *f_ext) : rnea_derivatives(m, q, qd, qdd);
         return {qdd, algorithm_detail::minus_product(Minv, id.dtau_dq), algorithm_detail::minus_product(Minv, id.dtau_dv), Minv};
     }
 };

@@ -5,6 +5,9 @@
 //   rnea.hpp                rnea: inverse dynamics τ(q, q̇, q̈), recursive Newton–Euler            (§5.3)
 //   crba.hpp                crba: the joint-space mass matrix H(q), composite rigid bodies        (§6.2)
 //   aba.hpp                 aba: forward dynamics q̈(q, q̇, τ), articulated bodies                (§7.3)
+//   minverse.hpp            minverse: H⁻¹(q) by the articulated-body recursion
+//   rnea_derivatives.hpp    rnea_derivatives: ∂τ/∂q, ∂τ/∂q̇, H           (Carpentier and Mansard 2018)
+//   aba_derivatives.hpp     aba_derivatives: ∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ = H⁻¹
 //   energy.hpp              tree_kinetic_energy, tree_potential_energy
 //   frames.hpp              frame_pose, frame_velocity, frame_acceleration, frame_classical_acceleration
 //   frame_jacobian.hpp      frame_jacobian, frame_jacobian_time_variation: J and J̇ of a frame
@@ -17,6 +20,7 @@
 #pragma once
 
 #include "ctga/chains/aba.hpp"
+#include "ctga/chains/aba_derivatives.hpp"
 #include "ctga/chains/center_of_mass.hpp"
 #include "ctga/chains/centroidal.hpp"
 #include "ctga/chains/checked_call.hpp"
@@ -26,5 +30,7 @@
 #include "ctga/chains/floating_base.hpp"
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/frames.hpp"
+#include "ctga/chains/minverse.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/rnea.hpp"
+#include "ctga/chains/rnea_derivatives.hpp"

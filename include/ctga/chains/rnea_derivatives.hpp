@@ -185,9 +185,16 @@ private:
                     const coscrew<T> NS = momentum(d.Nc_rate[j], S);
                     const coscrew<T> SH = coadjoint(S, d.Hc[j]);
                     const coscrew<T> r2 = NS - SH;
-                    const coscrew<T> dFv = NS + SH + momentum(d.Nc[j], d.Phi[c]);
-                    const coscrew<T> dF = momentum(d.Nc[j], d.Psi_dd[c]) + momentum(d.Nc_rate[j], d.Psi_d[c]) +
-                                          coadjoint(d.Psi_d[c], d.Hc[j]);
+                    // a body on the world: Ψ̇ = 0, and Φ = 0 for one dof (the terms are left out)
+                    const coscrew<T> dFv = [&] {
+                        if constexpr (p < 0 && J::nv == 1) return coscrew<T>(NS + SH);
+                        else return coscrew<T>(NS + SH + momentum(d.Nc[j], d.Phi[c]));
+                    }();
+                    const coscrew<T> dF = [&] {
+                        if constexpr (p < 0) return momentum(d.Nc[j], d.Psi_dd[c]);
+                        else return coscrew<T>(momentum(d.Nc[j], d.Psi_dd[c]) + momentum(d.Nc_rate[j], d.Psi_d[c]) +
+                                               coadjoint(d.Psi_d[c], d.Hc[j]));
+                    }();
                     out.tau[c] = pairing(d.Fc[j], S);
                     // the joint's own block
                     [&]<std::size_t... K2>(std::index_sequence<K2...>) {
@@ -202,8 +209,15 @@ private:
                         out.dtau_dq(k, c) = pairing(dFq, d.S[k]);
                         out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
                         out.M(k, c) = out.M(c, k) = pairing(r1, d.S[k]);
-                        out.dtau_dq(c, k) = pairing(r1, d.Psi_dd[k]) + pairing(r2, d.Psi_d[k]);
-                        out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
+                        constexpr std::size_t b = Tree::body_of_dof[k];
+                        if constexpr (Tree::parent[b] < 0) {  // Ψ̇_k = 0 (and Φ_k = 0 for one dof)
+                            out.dtau_dq(c, k) = pairing(r1, d.Psi_dd[k]);
+                            if constexpr (Tree::nv_of[b] == 1) out.dtau_dv(c, k) = pairing(r2, d.S[k]);
+                            else out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
+                        } else {
+                            out.dtau_dq(c, k) = pairing(r1, d.Psi_dd[k]) + pairing(r2, d.Psi_d[k]);
+                            out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
+                        }
                     });
                 }(), ...);
             }(std::make_index_sequence<J::nv>{});

@@ -108,7 +108,7 @@ struct minverse_t {
         auto U = uninitialized_array<coscrew<T>, nv>(), UD = uninitialized_array<coscrew<T>, nv>();
         auto F = uninitialized_array<coscrew<T>, nv>();
         // world poses, S and each body's own inertia
-        forward<n>([&](auto body) CTGA_INLINE_LAMBDA {
+        forward<n>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;
             constexpr int p = Tree::parent[i];
             using J = typename Tree::template joint_at<i>;
@@ -122,7 +122,7 @@ struct minverse_t {
             NA[i] = articulated_inertia_of(transform(pose[i], L.inertia));
         });
         // backwards: D⁻¹, the columns below each body, the articulated inertias
-        backward<n>([&](auto body) CTGA_INLINE_LAMBDA {
+        backward<n>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;
             constexpr int p = Tree::parent[i];
             constexpr std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];
@@ -174,7 +174,7 @@ struct minverse_t {
         auto A = []<std::size_t... I>(std::index_sequence<I...>) {
             return std::array<std::array<screw<T>, nv>, n>{((void)I, uninitialized_array<screw<T>, nv>())...};
         }(std::make_index_sequence<n>{});
-        forward<n>([&](auto body) CTGA_INLINE_LAMBDA {
+        forward<n>([&](auto body) {
             constexpr std::size_t i = decltype(body)::value;
             constexpr int p = Tree::parent[i];
             constexpr std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];

@@ -95,7 +95,7 @@ struct derivative_pass {
 template <class Tree, class T>
 constexpr void derivative_forward(derivative_pass<Tree, T>& d, const model<Tree, T>& m, const configuration<Tree, T>& q,
                                   const T* qd, const T* qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
-    forward<Tree::size>([&](auto body) CTGA_INLINE_LAMBDA {
+    forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         constexpr int p = Tree::parent[i];
         constexpr std::size_t o = Tree::v_offset[i];
@@ -171,7 +171,7 @@ private:
         rnea_partials<Tree, T> out{{}, tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                    tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                    tree_matrix<Tree, T, sparsity::branches>(uninitialized)};
-        backward<Tree::size>([&](auto body) CTGA_INLINE_LAMBDA {
+        backward<Tree::size>([&](auto body) {
             constexpr std::size_t j = decltype(body)::value;
             constexpr int p = Tree::parent[j];
             constexpr std::size_t o = Tree::v_offset[j];

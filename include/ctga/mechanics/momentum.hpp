@@ -91,16 +91,19 @@ struct inertia_rate_t : inertia_detail::inertia_rate_operation {
         const vec3<T> h = N.first_moment();
         const mat3<T> I = N.inertia_o();
         const vec3<T> hdot = linear3::add(linear3::cross(w, h), vec3<T>{m * u[0], m * u[1], m * u[2]});
-        const auto A = [&](int i, int j) {  // (ω × I_j)_i, I_j the columns of I
+        mat3<T> A;  // A(i, j) = (ω × I_j)_i, I_j the columns of I
+        for (int i = 0; i < 3; ++i) {
             const int a = (i + 1) % 3, b = (i + 2) % 3;
-            return w[a] * I[b][j] - w[b] * I[a][j];
-        };
+            for (int j = 0; j < 3; ++j) A[i][j] = w[a] * I[b][j] - w[b] * I[a][j];
+        }
         const T hu2 = T(2) * linear3::dot(h, u);
-        const auto rate = [&](int i, int j) {
-            return i == j ? T(2) * (A(i, i) - u[i] * h[i]) + hu2 : A(i, j) + A(j, i) - (u[i] * h[j] + h[i] * u[j]);
-        };
-        return {sc{T(0)},      sc{hdot[0]},   sc{hdot[1]},   sc{hdot[2]},   sc{rate(0, 0)},
-                sc{rate(1, 1)}, sc{rate(2, 2)}, sc{rate(0, 1)}, sc{rate(0, 2)}, sc{rate(1, 2)}};
+        mat3<T> R;
+        for (int i = 0; i < 3; ++i) {
+            R[i][i] = T(2) * (A[i][i] - u[i] * h[i]) + hu2;
+            for (int j = i + 1; j < 3; ++j) R[i][j] = A[i][j] + A[j][i] - (u[i] * h[j] + h[i] * u[j]);
+        }
+        return {sc{T(0)},     sc{hdot[0]},  sc{hdot[1]},  sc{hdot[2]},  sc{R[0][0]},
+                sc{R[1][1]},  sc{R[2][2]},  sc{R[0][1]},  sc{R[0][2]},  sc{R[1][2]}};
     }
 };
 inline constexpr inertia_rate_t inertia_rate{{formula(inertia_detail::inertia_rate_formula), into<inertia>}};

@@ -40,33 +40,47 @@ namespace ctga::chains {
 
 namespace algorithm_detail {
 
-// f(integral_constant<dof>) for every dof of the bodies body I supports other than I itself (its
-// subtree below it), in index order.
-template <std::size_t I, class Tree, class F>
-CTGA_ALWAYS_INLINE constexpr void each_carried_dof(F&& f) {
-    [&]<std::size_t... K>(std::index_sequence<K...>) {
-        ([&] {
-            if constexpr (Tree::supports(I, Tree::body_of_dof[K]) && Tree::body_of_dof[K] != I)
-                f(std::integral_constant<std::size_t, K>{});
-        }(), ...);
-    }(std::make_index_sequence<Tree::nv>{});
-}
-// … for the dofs j ≥ First of the bodies in body I's component (those hanging from the world
-// through the same root body).
+// The dofs of the bodies body I carries (its subtree without I), in index order; and the dofs
+// j ≥ First of the bodies in body I's component (those hanging from the world through the same
+// root body), each with whether I carries it. Lists the columns are looped over at run time
+// (each column's work is the same: compiled once per body, not once per pair).
 template <class Tree>
 constexpr std::size_t root_of(std::size_t i) noexcept {
     while (Tree::parent[i] >= 0) i = static_cast<std::size_t>(Tree::parent[i]);
     return i;
 }
-template <std::size_t I, std::size_t First, class Tree, class F>
-CTGA_ALWAYS_INLINE constexpr void each_later_dof_of_component(F&& f) {
-    [&]<std::size_t... K>(std::index_sequence<K...>) {
-        ([&] {
-            if constexpr (root_of<Tree>(Tree::body_of_dof[First + K]) == root_of<Tree>(I))
-                f(std::integral_constant<std::size_t, First + K>{});
-        }(), ...);
-    }(std::make_index_sequence<Tree::nv - First>{});
-}
+template <class Tree, std::size_t I>
+inline constexpr auto carried_dofs = [] {
+    constexpr auto carried = [](std::size_t j) { return Tree::supports(I, Tree::body_of_dof[j]) && Tree::body_of_dof[j] != I; };
+    constexpr std::size_t count = [&] {
+        std::size_t c = 0;
+        for (std::size_t j = 0; j < Tree::nv; ++j) c += carried(j);
+        return c;
+    }();
+    std::array<std::size_t, count> out{};
+    std::size_t c = 0;
+    for (std::size_t j = 0; j < Tree::nv; ++j)
+        if (carried(j)) out[c++] = j;
+    return out;
+}();
+struct component_dof {
+    std::size_t j;
+    bool carried;  // by the body the list is for
+};
+template <class Tree, std::size_t I, std::size_t First>
+inline constexpr auto later_dofs_of_component = [] {
+    constexpr auto in = [](std::size_t j) { return root_of<Tree>(Tree::body_of_dof[j]) == root_of<Tree>(I); };
+    constexpr std::size_t count = [&] {
+        std::size_t c = 0;
+        for (std::size_t j = First; j < Tree::nv; ++j) c += in(j);
+        return c;
+    }();
+    std::array<component_dof, count> out{};
+    std::size_t c = 0;
+    for (std::size_t j = First; j < Tree::nv; ++j)
+        if (in(j)) out[c++] = {j, Tree::supports(I, Tree::body_of_dof[j])};
+    return out;
+}();
 
 // D⁻¹ of a joint's D = Sᵀ N^A S (n × n, symmetric positive definite for a body with mass): 1/D
 // for one dof, by Cholesky otherwise (NaN when it is not positive definite: never a number
@@ -138,8 +152,7 @@ struct minverse_t {
                     UD[o + c] = x;
                 }
                 // the columns of the bodies below: H⁻¹(i, j) = −D⁻¹ Sᵀ F[j], then F[j] += U H⁻¹(i, j)
-                each_carried_dof<i, Tree>([&](auto dof) CTGA_INLINE_LAMBDA {
-                    constexpr std::size_t j = decltype(dof)::value;
+                for (const std::size_t j : carried_dofs<Tree, i>) {
                     std::array<T, k> g;
                     for (std::size_t b = 0; b < k; ++b) g[b] = pairing(F[j], S[o + b]);
                     for (std::size_t c = 0; c < k; ++c) {
@@ -148,7 +161,7 @@ struct minverse_t {
                         Minv(o + c, j) = -x;
                         F[j] = F[j] - U[o + c] * x;
                     }
-                });
+                }
                 // its own columns: H⁻¹ = D⁻¹ there, and F = U D⁻¹
                 for (std::size_t c = 0; c < k; ++c) {
                     for (std::size_t b = 0; b < k; ++b) Minv(o + b, o + c) = Dinv[b][c];
@@ -180,25 +193,23 @@ struct minverse_t {
             constexpr std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];
             if constexpr (o == nv) {
             } else if constexpr (k > 0)
-                each_later_dof_of_component<i, o, Tree>([&](auto dof) CTGA_INLINE_LAMBDA {
-                    constexpr std::size_t j = decltype(dof)::value;
-                    constexpr bool carried = Tree::supports(i, Tree::body_of_dof[j]);  // set backwards
+                for (const component_dof jc : later_dofs_of_component<Tree, i, o>) {
+                    const std::size_t j = jc.j;
                     screw<T> a;
                     if constexpr (p >= 0) a = A[p][j];
                     for (std::size_t c = 0; c < k; ++c) {
-                        T x = carried ? Minv(o + c, j) : T(0);
+                        T x = jc.carried ? Minv(o + c, j) : T(0);  // set backwards
                         if constexpr (p >= 0) x -= pairing(UD[o + c], A[p][j]);
                         Minv(o + c, j) = x;
                         a = a + S[o + c] * x;
                     }
                     A[i][j] = a;
-                });
+                }
             else  // a fixed joint: the parent's accelerations (the world's: zero)
-                each_later_dof_of_component<i, o, Tree>([&](auto dof) CTGA_INLINE_LAMBDA {
-                    constexpr std::size_t j = decltype(dof)::value;
-                    if constexpr (p >= 0) A[i][j] = A[p][j];
-                    else A[i][j] = screw<T>{};
-                });
+                for (const component_dof jc : later_dofs_of_component<Tree, i, o>) {
+                    if constexpr (p >= 0) A[i][jc.j] = A[p][jc.j];
+                    else A[i][jc.j] = screw<T>{};
+                }
         });
         // the lower triangle, mirrored
         for (std::size_t r = 0; r < nv; ++r)

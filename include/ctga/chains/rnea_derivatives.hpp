@@ -62,22 +62,40 @@ struct rnea_partials {
 
 namespace algorithm_detail {
 
-// f(integral_constant<dof>) for every dof of body B and of each of its ancestors.
-template <int B, class Tree, class F>
-CTGA_ALWAYS_INLINE constexpr void each_supporting_dof(F&& f) {
-    if constexpr (B >= 0) {
-        constexpr std::size_t b = static_cast<std::size_t>(B);
-        [&]<std::size_t... K>(std::index_sequence<K...>) {
-            (f(std::integral_constant<std::size_t, Tree::v_offset[b] + K>{}), ...);
-        }(std::make_index_sequence<Tree::nv_of[b]>{});
-        each_supporting_dof<Tree::parent[b], Tree>(f);
-    }
-}
+// A tree's shape as tables for loops at run time: for body b, the dofs of its ancestors are
+// supporting_dofs[first[b] … first[b + 1]); on_world[k]: dof k's body hangs from the world.
+template <class Tree>
+struct branch_tables {
+    static constexpr auto first = [] {
+        std::array<std::size_t, Tree::size + 1> f{};
+        for (std::size_t b = 0; b < Tree::size; ++b) {
+            std::size_t c = 0;
+            for (int a = Tree::parent[b]; a >= 0; a = Tree::parent[static_cast<std::size_t>(a)]) c += Tree::nv_of[static_cast<std::size_t>(a)];
+            f[b + 1] = f[b] + c;
+        }
+        return f;
+    }();
+    static constexpr auto supporting_dofs = [] {
+        std::array<std::size_t, first[Tree::size]> d{};
+        for (std::size_t b = 0; b < Tree::size; ++b) {
+            std::size_t c = first[b];
+            for (int a = Tree::parent[b]; a >= 0; a = Tree::parent[static_cast<std::size_t>(a)])
+                for (std::size_t k = 0; k < Tree::nv_of[static_cast<std::size_t>(a)]; ++k) d[c++] = Tree::v_offset[static_cast<std::size_t>(a)] + k;
+        }
+        return d;
+    }();
+    static constexpr auto on_world = [] {
+        std::array<bool, Tree::nv> w{};
+        for (std::size_t k = 0; k < Tree::nv; ++k) w[k] = Tree::parent[Tree::body_of_dof[k]] < 0;
+        return w;
+    }();
+};
 
 // The world-frame numbers of the recursion: per body its composites, per dof its columns.
 template <class Tree, class T>
 struct derivative_pass {
     std::array<motor_map<T>, Tree::size> pose;
+    std::array<body_inertia<T>, Tree::size> N;      // each body's own inertia (its frame, then the world's)
     std::array<screw<T>, Tree::size> v, a;         // world velocity and acceleration (−g at the world)
     std::array<body_inertia<T>, Tree::size> Nc, Nc_rate;
     std::array<coscrew<T>, Tree::size> Hc, Fc;     // composite momentum and force
@@ -90,57 +108,111 @@ struct derivative_pass {
           Psi_dd(uninitialized_array<screw<T>, Tree::nv>()), Phi(uninitialized_array<screw<T>, Tree::nv>()) {}
 };
 
-// Forward: world poses, velocities, accelerations, the dofs' S, Ψ̇, Ψ̈, Φ, each body's N, Ṅ,
-// h = N v and f = N a + v ×* h − f_ext, as the composites' first terms.
+// What depends on the joints' types, body by body (unrolled): world poses, the dofs' S in the
+// world frame (an axis joint's blade moved out: 6m 3a), each body's inertia.
 template <class Tree, class T>
-constexpr void derivative_forward(derivative_pass<Tree, T>& d, const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                  const T* qd, const T* qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
+constexpr void derivative_geometry(derivative_pass<Tree, T>& d, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
     forward<Tree::size>([&](auto body) {
         constexpr std::size_t i = decltype(body)::value;
         constexpr int p = Tree::parent[i];
-        constexpr std::size_t o = Tree::v_offset[i];
         using J = typename Tree::template joint_at<i>;
         const auto& L = m.template link<i>();
         const motor_map<T> X = joint_map<i>(m, q);
         if constexpr (p < 0) d.pose[i] = X;
         else d.pose[i] = compose(d.pose[p], X);
-        const motor_map<T>& G = d.pose[i];
-        const screw<T> a_p = [&] {
-            if constexpr (p < 0) return screw<T>{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
-            else return d.a[p];
-        }();
-        screw<T> v = [&] {
-            if constexpr (p < 0) return screw<T>{};
-            else return d.v[p];
-        }();
-        screw<T> a = a_p;
         [&]<std::size_t... K>(std::index_sequence<K...>) {
-            ([&] {
-                const screw<T> S = frame_detail::moved_out(G, J::template subspace<K, T>(L.joint));
-                d.S[o + K] = S;
-                if constexpr (p < 0) {  // the world does not move: Ψ̇ = 0
-                    d.Psi_d[o + K] = screw<T>{};
-                    d.Psi_dd[o + K] = bracket(a_p, S);
-                } else {
-                    d.Psi_d[o + K] = bracket(d.v[p], S);
-                    d.Psi_dd[o + K] = bracket(a_p, S) + bracket(d.v[p], d.Psi_d[o + K]);
-                }
-                // a = a_λ + Σ S q̈ + v × S q̇, and v × S = v_λ × S = Ψ̇
-                v = v + S * qd[o + K];
-                a = a + S * qdd[o + K] + d.Psi_d[o + K] * qd[o + K];
-            }(), ...);
-            // Φ = Ψ̇ + v_j × S: 2Ψ̇ for one dof (v_j × S = v_λ × S), else with the joint's own motion
-            ((d.Phi[o + K] = J::nv == 1 ? screw<T>(d.Psi_d[o + K] + d.Psi_d[o + K]) : screw<T>(d.Psi_d[o + K] + bracket(v, d.S[o + K]))), ...);
+            ((d.S[Tree::v_offset[i] + K] = frame_detail::moved_out(d.pose[i], J::template subspace<K, T>(L.joint))), ...);
         }(std::make_index_sequence<J::nv>{});
+        d.N[i] = L.inertia;
+    });
+}
+
+// The rest is the same for every joint, in the world frame: a loop over the bodies at run time,
+// compiled once for any tree. Forwards: velocities, accelerations, the dofs' Ψ̇, Ψ̈, Φ, each body's
+// N, Ṅ, h = N v and f = N a + v ×* h − f_ext as the composites' first terms.
+template <class Tree, class T>
+constexpr void derivative_forward(derivative_pass<Tree, T>& d, const vec3<T>& gravity, const T* qd, const T* qdd,
+                                  const body_wrenches<Tree, T>* f_ext) noexcept {
+    const screw<T> a_world{T(0), T(0), T(0), -gravity[0], -gravity[1], -gravity[2]};
+    for (std::size_t i = 0; i < Tree::size; ++i) {
+        const int p = Tree::parent[i];
+        const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
+        const screw<T> a_p = p < 0 ? a_world : d.a[static_cast<std::size_t>(p)];
+        const screw<T> v_p = p < 0 ? screw<T>{} : d.v[static_cast<std::size_t>(p)];
+        screw<T> v = v_p, a = a_p;
+        for (std::size_t k = o; k < o + nv; ++k) {
+            const screw<T>& S = d.S[k];
+            if (p < 0) {  // the world does not move: Ψ̇ = 0
+                d.Psi_d[k] = screw<T>{};
+                d.Psi_dd[k] = bracket(a_p, S);
+            } else {
+                d.Psi_d[k] = bracket(v_p, S);
+                d.Psi_dd[k] = bracket(a_p, S) + bracket(v_p, d.Psi_d[k]);
+            }
+            // a = a_λ + Σ S q̈ + v × S q̇, and v × S = v_λ × S = Ψ̇
+            v = v + S * qd[k];
+            a = a + S * qdd[k] + d.Psi_d[k] * qd[k];
+        }
+        // Φ = Ψ̇ + v_j × S: 2Ψ̇ for one dof (v_j × S = v_λ × S), else with the joint's own motion
+        for (std::size_t k = o; k < o + nv; ++k)
+            d.Phi[k] = nv == 1 ? screw<T>(d.Psi_d[k] + d.Psi_d[k]) : screw<T>(d.Psi_d[k] + bracket(v, d.S[k]));
         d.v[i] = v;
         d.a[i] = a;
-        const body_inertia<T> N = transform(G, L.inertia);
+        const body_inertia<T> N = transform(d.pose[i], d.N[i]);
         d.Nc[i] = N;
         d.Nc_rate[i] = inertia_rate(N, v);
         d.Hc[i] = momentum(N, v);
         d.Fc[i] = momentum(N, a) + coadjoint(v, d.Hc[i]);
-        if (f_ext) d.Fc[i] = d.Fc[i] - transform(G, (*f_ext)[i]);
-    });
+        if (f_ext) d.Fc[i] = d.Fc[i] - transform(d.pose[i], (*f_ext)[i]);
+    }
+}
+
+// Backwards: body j's composites are complete when it is reached (its children, later bodies,
+// have added theirs); then its dofs' columns and rows, and its composites go to its parent.
+template <class Tree, class T>
+constexpr void derivative_backward(derivative_pass<Tree, T>& d, rnea_partials<Tree, T>& out) noexcept {
+    using tables = branch_tables<Tree>;
+    for (std::size_t j = Tree::size; j-- > 0;) {
+        const int p = Tree::parent[j];
+        const std::size_t o = Tree::v_offset[j], nv = Tree::nv_of[j];
+        for (std::size_t c = o; c < o + nv; ++c) {
+            const screw<T>& S = d.S[c];
+            const coscrew<T> r1 = momentum(d.Nc[j], S);
+            const coscrew<T> NS = momentum(d.Nc_rate[j], S);
+            const coscrew<T> SH = coadjoint(S, d.Hc[j]);
+            const coscrew<T> r2 = NS - SH;
+            // a body on the world: Ψ̇ = 0, and Φ = 0 for one dof (the terms are left out)
+            const coscrew<T> dFv = p < 0 && nv == 1 ? coscrew<T>(NS + SH) : coscrew<T>(NS + SH + momentum(d.Nc[j], d.Phi[c]));
+            const coscrew<T> dF = p < 0 ? momentum(d.Nc[j], d.Psi_dd[c])
+                                        : coscrew<T>(momentum(d.Nc[j], d.Psi_dd[c]) + momentum(d.Nc_rate[j], d.Psi_d[c]) +
+                                                     coadjoint(d.Psi_d[c], d.Hc[j]));
+            out.tau[c] = pairing(d.Fc[j], S);
+            // the joint's own block
+            for (std::size_t k = o; k < o + nv; ++k) {
+                out.dtau_dq(k, c) = pairing(dF, d.S[k]);
+                out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
+                out.M(k, c) = pairing(r1, d.S[k]);
+            }
+            // the ancestors' rows of this column, and this row's entries in their columns
+            const coscrew<T> dFq = dF + coadjoint(S, d.Fc[j]);
+            for (std::size_t e = tables::first[j]; e < tables::first[j + 1]; ++e) {
+                const std::size_t k = tables::supporting_dofs[e];
+                out.dtau_dq(k, c) = pairing(dFq, d.S[k]);
+                out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
+                out.M(k, c) = out.M(c, k) = pairing(r1, d.S[k]);
+                out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
+                out.dtau_dq(c, k) = tables::on_world[k] ? pairing(r1, d.Psi_dd[k])  // Ψ̇_k = 0 on the world
+                                                        : pairing(r1, d.Psi_dd[k]) + pairing(r2, d.Psi_d[k]);
+            }
+        }
+        if (p >= 0) {
+            const std::size_t q = static_cast<std::size_t>(p);
+            d.Nc[q] = d.Nc[q] + d.Nc[j];
+            d.Nc_rate[q] = d.Nc_rate[q] + d.Nc_rate[j];
+            d.Hc[q] = d.Hc[q] + d.Hc[j];
+            d.Fc[q] = d.Fc[q] + d.Fc[j];
+        }
+    }
 }
 
 }  // namespace algorithm_detail
@@ -167,67 +239,12 @@ private:
         static_assert(!Tree::has_mimic, "ctga::chains::rnea_derivatives: trees with mimic joints are not supported yet");
         using namespace algorithm_detail;
         derivative_pass<Tree, T> d{uninitialized};
-        derivative_forward(d, m, q, qd.data(), qdd.data(), f_ext);
+        derivative_geometry(d, m, q);
+        derivative_forward(d, m.gravity, qd.data(), qdd.data(), f_ext);
         rnea_partials<Tree, T> out{{}, tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                    tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                    tree_matrix<Tree, T, sparsity::branches>(uninitialized)};
-        backward<Tree::size>([&](auto body) {
-            constexpr std::size_t j = decltype(body)::value;
-            constexpr int p = Tree::parent[j];
-            constexpr std::size_t o = Tree::v_offset[j];
-            using J = typename Tree::template joint_at<j>;
-            // body j's composites are complete: its children (later bodies) have added theirs
-            [&]<std::size_t... K>(std::index_sequence<K...>) {
-                ([&] {
-                    constexpr std::size_t c = o + K;
-                    const screw<T>& S = d.S[c];
-                    const coscrew<T> r1 = momentum(d.Nc[j], S);
-                    const coscrew<T> NS = momentum(d.Nc_rate[j], S);
-                    const coscrew<T> SH = coadjoint(S, d.Hc[j]);
-                    const coscrew<T> r2 = NS - SH;
-                    // a body on the world: Ψ̇ = 0, and Φ = 0 for one dof (the terms are left out)
-                    const coscrew<T> dFv = [&] {
-                        if constexpr (p < 0 && J::nv == 1) return coscrew<T>(NS + SH);
-                        else return coscrew<T>(NS + SH + momentum(d.Nc[j], d.Phi[c]));
-                    }();
-                    const coscrew<T> dF = [&] {
-                        if constexpr (p < 0) return momentum(d.Nc[j], d.Psi_dd[c]);
-                        else return coscrew<T>(momentum(d.Nc[j], d.Psi_dd[c]) + momentum(d.Nc_rate[j], d.Psi_d[c]) +
-                                               coadjoint(d.Psi_d[c], d.Hc[j]));
-                    }();
-                    out.tau[c] = pairing(d.Fc[j], S);
-                    // the joint's own block
-                    [&]<std::size_t... K2>(std::index_sequence<K2...>) {
-                        ((out.dtau_dq(o + K2, c) = pairing(dF, d.S[o + K2]), out.dtau_dv(o + K2, c) = pairing(dFv, d.S[o + K2]),
-                          out.M(o + K2, c) = pairing(r1, d.S[o + K2])),
-                         ...);
-                    }(std::make_index_sequence<J::nv>{});
-                    // the ancestors' rows of this column, and this row's entries in their columns
-                    const coscrew<T> dFq = dF + coadjoint(S, d.Fc[j]);
-                    each_supporting_dof<p, Tree>([&](auto dof) CTGA_INLINE_LAMBDA {
-                        constexpr std::size_t k = decltype(dof)::value;
-                        out.dtau_dq(k, c) = pairing(dFq, d.S[k]);
-                        out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
-                        out.M(k, c) = out.M(c, k) = pairing(r1, d.S[k]);
-                        constexpr std::size_t b = Tree::body_of_dof[k];
-                        if constexpr (Tree::parent[b] < 0) {  // Ψ̇_k = 0 (and Φ_k = 0 for one dof)
-                            out.dtau_dq(c, k) = pairing(r1, d.Psi_dd[k]);
-                            if constexpr (Tree::nv_of[b] == 1) out.dtau_dv(c, k) = pairing(r2, d.S[k]);
-                            else out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
-                        } else {
-                            out.dtau_dq(c, k) = pairing(r1, d.Psi_dd[k]) + pairing(r2, d.Psi_d[k]);
-                            out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
-                        }
-                    });
-                }(), ...);
-            }(std::make_index_sequence<J::nv>{});
-            if constexpr (p >= 0) {
-                d.Nc[p] = d.Nc[p] + d.Nc[j];
-                d.Nc_rate[p] = d.Nc_rate[p] + d.Nc_rate[j];
-                d.Hc[p] = d.Hc[p] + d.Hc[j];
-                d.Fc[p] = d.Fc[p] + d.Fc[j];
-            }
-        });
+        derivative_backward(d, out);
         return out;
     }
 };

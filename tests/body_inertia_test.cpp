@@ -23,7 +23,7 @@ static_assert(cost_of<decltype(momentum.formula(std::declval<const body_inertia<
 TEST_CASE("body_inertia is the element N of inertia_of, and its operations agree", "[mechanics][inertia]") {
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> u(-1, 1), pos(0.5, 2.0);
-    double worst_element = 0, worst_momentum = 0, worst_energy = 0, worst_transform = 0;
+    double worst_element = 0, worst_momentum = 0, worst_energy = 0, worst_transform = 0, worst_rate = 0;
     for (int n = 0; n < 500; ++n) {
         const double a = pos(rng), b = pos(rng), c = pos(rng), m = pos(rng);
         const motor_map<double> Q = map_of(ctga::exp(screw<double>{2 * u(rng), 2 * u(rng), 2 * u(rng), 0, 0, 0}));
@@ -42,11 +42,14 @@ TEST_CASE("body_inertia is the element N of inertia_of, and its operations agree
         const motor_map<double> G =
             map_of(ctga::exp(screw<double>{2 * u(rng), 2 * u(rng), 2 * u(rng), 5 * u(rng), 5 * u(rng), 5 * u(rng)}));
         worst_transform = std::max(worst_transform, rel(to_rigid_inertia(transform(G, N10)), transform(G, N24)));
+        // the rate of a moving body's inertia by its ten parameters = the formula of §6 on the element
+        worst_rate = std::max(worst_rate, rel(inertia<double>(to_rigid_inertia(inertia_rate(N10, s))), inertia_rate(N24, s)));
     }
-    std::printf("body_inertia vs rigid_inertia: element %.1e, momentum %.1e, energy %.1e, transform %.1e\n", worst_element,
-                worst_momentum, worst_energy, worst_transform);
+    std::printf("body_inertia vs rigid_inertia: element %.1e, momentum %.1e, energy %.1e, transform %.1e, rate %.1e\n",
+                worst_element, worst_momentum, worst_energy, worst_transform, worst_rate);
     CHECK(worst_element <= 1e-15);
     CHECK(worst_momentum <= 1e-14);
     CHECK(worst_energy <= 1e-14);
     CHECK(worst_transform <= 1e-14);
+    CHECK(worst_rate <= 1e-14);
 }

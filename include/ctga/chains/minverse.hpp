@@ -26,6 +26,7 @@
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/tree_matrix.hpp"
+#include "ctga/chains/world_geometry.hpp"
 #include "ctga/mechanics/articulated_inertia.hpp"
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/inertia_transform.hpp"
@@ -40,47 +41,20 @@ namespace ctga::chains {
 
 namespace algorithm_detail {
 
-// The dofs of the bodies body I carries (its subtree without I), in index order; and the dofs
-// j ≥ First of the bodies in body I's component (those hanging from the world through the same
-// root body), each with whether I carries it. Lists the columns are looped over at run time
-// (each column's work is the same: compiled once per body, not once per pair).
+// The dofs j ≥ the first of body b's own in b's component (its bodies hang from the world through
+// the same root body), and whether b carries j's body: the columns of b's rows, forwards.
 template <class Tree>
-constexpr std::size_t root_of(std::size_t i) noexcept {
-    while (Tree::parent[i] >= 0) i = static_cast<std::size_t>(Tree::parent[i]);
-    return i;
-}
-template <class Tree, std::size_t I>
-inline constexpr auto carried_dofs = [] {
-    constexpr auto carried = [](std::size_t j) { return Tree::supports(I, Tree::body_of_dof[j]) && Tree::body_of_dof[j] != I; };
-    constexpr std::size_t count = [&] {
-        std::size_t c = 0;
-        for (std::size_t j = 0; j < Tree::nv; ++j) c += carried(j);
-        return c;
-    }();
-    std::array<std::size_t, count> out{};
-    std::size_t c = 0;
-    for (std::size_t j = 0; j < Tree::nv; ++j)
-        if (carried(j)) out[c++] = j;
-    return out;
-}();
-struct component_dof {
-    std::size_t j;
-    bool carried;  // by the body the list is for
+struct component_tables {
+    struct entry {
+        std::size_t j;
+        bool carried;
+    };
+    static constexpr auto in = [](std::size_t b, std::size_t j) {
+        return j >= Tree::v_offset[b] && root_of<Tree>(Tree::body_of_dof[j]) == root_of<Tree>(b);
+    };
+    static constexpr auto make = [](std::size_t b, std::size_t j) { return entry{j, Tree::supports(b, Tree::body_of_dof[j])}; };
+    static constexpr auto later = make_dof_lists<Tree, entry, decltype(in), decltype(make)>();
 };
-template <class Tree, std::size_t I, std::size_t First>
-inline constexpr auto later_dofs_of_component = [] {
-    constexpr auto in = [](std::size_t j) { return root_of<Tree>(Tree::body_of_dof[j]) == root_of<Tree>(I); };
-    constexpr std::size_t count = [&] {
-        std::size_t c = 0;
-        for (std::size_t j = First; j < Tree::nv; ++j) c += in(j);
-        return c;
-    }();
-    std::array<component_dof, count> out{};
-    std::size_t c = 0;
-    for (std::size_t j = First; j < Tree::nv; ++j)
-        if (in(j)) out[c++] = {j, Tree::supports(I, Tree::body_of_dof[j])};
-    return out;
-}();
 
 // D⁻¹ of a joint's D = Sᵀ N^A S (n × n, symmetric positive definite for a body with mass): 1/D
 // for one dof, by Cholesky otherwise (NaN when it is not positive definite: never a number
@@ -106,6 +80,59 @@ constexpr std::array<std::array<T, N>, N> joint_inverse(const std::array<std::ar
     }
 }
 
+// Body j's step backwards, for a joint of K dofs (K = 1, or 6 for a floating joint): U, D⁻¹, the
+// columns of the bodies below, its own columns, and what its parent sees.
+template <std::size_t K, class Tree, class T>
+constexpr void minverse_backward_step(std::size_t j, const world_geometry<Tree, T>& g, std::array<articulated_inertia<T>, Tree::size>& NA,
+                                      std::array<coscrew<T>, Tree::nv>& U, std::array<coscrew<T>, Tree::nv>& UD,
+                                      std::array<coscrew<T>, Tree::nv>& F, tree_matrix<Tree, T, sparsity::components>& Minv) noexcept {
+    using tables = branch_tables<Tree>;
+    const std::size_t o = Tree::v_offset[j];
+    const int p = Tree::parent[j];
+    std::array<std::array<T, K>, K> D;
+    for (std::size_t c = 0; c < K; ++c) U[o + c] = momentum(NA[j], g.S[o + c]);
+    for (std::size_t a = 0; a < K; ++a)
+        for (std::size_t b = 0; b < K; ++b) D[a][b] = pairing(U[o + b], g.S[o + a]);
+    const std::array<std::array<T, K>, K> Dinv = joint_inverse(D);
+    for (std::size_t c = 0; c < K; ++c) {
+        coscrew<T> x = U[o] * Dinv[0][c];
+        for (std::size_t b = 1; b < K; ++b) x = x + U[o + b] * Dinv[b][c];
+        UD[o + c] = x;
+    }
+    // the columns of the bodies below: H⁻¹(j, i) = −D⁻¹ Sᵀ F[i], then F[i] += U H⁻¹(j, i)
+    for (std::size_t e = tables::carried.first[j]; e < tables::carried.first[j + 1]; ++e) {
+        const std::size_t i = tables::carried.list[e];
+        std::array<T, K> s;
+        for (std::size_t b = 0; b < K; ++b) s[b] = pairing(F[i], g.S[o + b]);
+        for (std::size_t c = 0; c < K; ++c) {
+            T x = Dinv[c][0] * s[0];
+            for (std::size_t b = 1; b < K; ++b) x += Dinv[c][b] * s[b];
+            Minv(o + c, i) = -x;
+            F[i] = F[i] - U[o + c] * x;
+        }
+    }
+    // its own columns: H⁻¹ = D⁻¹ there, and F = U D⁻¹
+    for (std::size_t c = 0; c < K; ++c) {
+        for (std::size_t b = 0; b < K; ++b) Minv(o + b, o + c) = Dinv[b][c];
+        F[o + c] = UD[o + c];
+    }
+    // the parent sees N^A − U D⁻¹ Uᵀ (zero for a 6-dof joint, up to rounding)
+    if (p < 0) return;
+    const std::size_t q = static_cast<std::size_t>(p);
+    if constexpr (K == 1) {
+        NA[q] = NA[q] + minus_joint(NA[j], U[o], Dinv[0][0]);
+    } else {
+        articulated_inertia<T> x = NA[j];
+        for (std::size_t e = 0; e < 21; ++e) {
+            const auto rc = articulated_detail::upper_entries[e];
+            T y = x.n[e][0];
+            for (std::size_t b = 0; b < K; ++b) y -= UD[o + b][rc.i] * U[o + b][rc.j];
+            x.n[e] = typename articulated_inertia<T>::scalar{y};
+        }
+        NA[q] = NA[q] + x;
+    }
+}
+
 }  // namespace algorithm_detail
 
 struct minverse_t {
@@ -116,101 +143,43 @@ struct minverse_t {
         using namespace algorithm_detail;
         constexpr std::size_t n = Tree::size, nv = Tree::nv;
         tree_matrix<Tree, T, sparsity::components> Minv(uninitialized);
-        std::array<motor_map<T>, n> pose;
+        world_geometry<Tree, T> g{uninitialized};
+        fill_world_geometry(g, m, q);
+        // the rest is the same for every joint in the world frame: loops over the bodies
         std::array<articulated_inertia<T>, n> NA;
-        auto S = uninitialized_array<screw<T>, nv>();
+        for (std::size_t i = 0; i < n; ++i) NA[i] = articulated_inertia_of(transform(g.pose[i], g.N[i]));
         auto U = uninitialized_array<coscrew<T>, nv>(), UD = uninitialized_array<coscrew<T>, nv>();
         auto F = uninitialized_array<coscrew<T>, nv>();
-        // world poses, S and each body's own inertia
-        forward<n>([&](auto body) {
-            constexpr std::size_t i = decltype(body)::value;
-            constexpr int p = Tree::parent[i];
-            using J = typename Tree::template joint_at<i>;
-            const auto& L = m.template link<i>();
-            const motor_map<T> X = joint_map<i>(m, q);
-            if constexpr (p < 0) pose[i] = X;
-            else pose[i] = compose(pose[p], X);
-            [&]<std::size_t... K>(std::index_sequence<K...>) {
-                ((S[Tree::v_offset[i] + K] = frame_detail::moved_out(pose[i], J::template subspace<K, T>(L.joint))), ...);
-            }(std::make_index_sequence<J::nv>{});
-            NA[i] = articulated_inertia_of(transform(pose[i], L.inertia));
-        });
         // backwards: D⁻¹, the columns below each body, the articulated inertias
-        backward<n>([&](auto body) {
-            constexpr std::size_t i = decltype(body)::value;
-            constexpr int p = Tree::parent[i];
-            constexpr std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];
-            if constexpr (k > 0) {
-                std::array<std::array<T, k>, k> D;
-                for (std::size_t c = 0; c < k; ++c) U[o + c] = momentum(NA[i], S[o + c]);
-                for (std::size_t a = 0; a < k; ++a)
-                    for (std::size_t b = 0; b < k; ++b) D[a][b] = pairing(U[o + b], S[o + a]);
-                const std::array<std::array<T, k>, k> Dinv = joint_inverse(D);
-                for (std::size_t c = 0; c < k; ++c) {
-                    coscrew<T> x = U[o] * Dinv[0][c];
-                    for (std::size_t b = 1; b < k; ++b) x = x + U[o + b] * Dinv[b][c];
-                    UD[o + c] = x;
-                }
-                // the columns of the bodies below: H⁻¹(i, j) = −D⁻¹ Sᵀ F[j], then F[j] += U H⁻¹(i, j)
-                for (const std::size_t j : carried_dofs<Tree, i>) {
-                    std::array<T, k> g;
-                    for (std::size_t b = 0; b < k; ++b) g[b] = pairing(F[j], S[o + b]);
-                    for (std::size_t c = 0; c < k; ++c) {
-                        T x = Dinv[c][0] * g[0];
-                        for (std::size_t b = 1; b < k; ++b) x += Dinv[c][b] * g[b];
-                        Minv(o + c, j) = -x;
-                        F[j] = F[j] - U[o + c] * x;
-                    }
-                }
-                // its own columns: H⁻¹ = D⁻¹ there, and F = U D⁻¹
-                for (std::size_t c = 0; c < k; ++c) {
-                    for (std::size_t b = 0; b < k; ++b) Minv(o + b, o + c) = Dinv[b][c];
-                    F[o + c] = UD[o + c];
-                }
-                // the parent sees N^A − U D⁻¹ Uᵀ (zero for a 6-dof joint, up to rounding)
-                if constexpr (p >= 0 && k == 1) {
-                    NA[p] = NA[p] + minus_joint(NA[i], U[o], Dinv[0][0]);
-                } else if constexpr (p >= 0) {
-                    articulated_inertia<T> x = NA[i];
-                    for (std::size_t e = 0; e < 21; ++e) {
-                        const auto rc = articulated_detail::upper_entries[e];
-                        T y = x.n[e][0];
-                        for (std::size_t b = 0; b < k; ++b) y -= UD[o + b][rc.i] * U[o + b][rc.j];
-                        x.n[e] = typename articulated_inertia<T>::scalar{y};
-                    }
-                    NA[p] = NA[p] + x;
-                }
+        for (std::size_t j = n; j-- > 0;) {
+            const std::size_t k = Tree::nv_of[j];
+            if (k == 1) minverse_backward_step<1>(j, g, NA, U, UD, F, Minv);
+            else if constexpr (branch_tables<Tree>::multi_dof) {
+                if (k == 6) minverse_backward_step<6>(j, g, NA, U, UD, F, Minv);
             }
-            if constexpr (p >= 0 && k == 0) NA[p] = NA[p] + NA[i];
-        });
-        // forwards: the parent's acceleration of every later column of the component
+            if (k == 0 && Tree::parent[j] >= 0) NA[static_cast<std::size_t>(Tree::parent[j])] = NA[static_cast<std::size_t>(Tree::parent[j])] + NA[j];
+        }
+        // forwards: each body's rows over the later columns of its component, with its parent's
+        // accelerations for them (the world's: zero)
         auto A = []<std::size_t... I>(std::index_sequence<I...>) {
             return std::array<std::array<screw<T>, nv>, n>{((void)I, uninitialized_array<screw<T>, nv>())...};
         }(std::make_index_sequence<n>{});
-        forward<n>([&](auto body) {
-            constexpr std::size_t i = decltype(body)::value;
-            constexpr int p = Tree::parent[i];
-            constexpr std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];
-            if constexpr (o == nv) {
-            } else if constexpr (k > 0)
-                for (const component_dof jc : later_dofs_of_component<Tree, i, o>) {
-                    const std::size_t j = jc.j;
-                    screw<T> a;
-                    if constexpr (p >= 0) a = A[p][j];
-                    for (std::size_t c = 0; c < k; ++c) {
-                        T x = jc.carried ? Minv(o + c, j) : T(0);  // set backwards
-                        if constexpr (p >= 0) x -= pairing(UD[o + c], A[p][j]);
-                        Minv(o + c, j) = x;
-                        a = a + S[o + c] * x;
-                    }
-                    A[i][j] = a;
+        using later = component_tables<Tree>;
+        for (std::size_t i = 0; i < n; ++i) {
+            const int p = Tree::parent[i];
+            const std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];
+            for (std::size_t e = later::later.first[i]; e < later::later.first[i + 1]; ++e) {
+                const auto [j, carried] = later::later.list[e];
+                screw<T> a = p < 0 ? screw<T>{} : A[static_cast<std::size_t>(p)][j];
+                for (std::size_t c = o; c < o + k; ++c) {
+                    T x = carried ? Minv(c, j) : T(0);  // (set backwards)
+                    if (p >= 0) x -= pairing(UD[c], A[static_cast<std::size_t>(p)][j]);
+                    Minv(c, j) = x;
+                    a = a + g.S[c] * x;
                 }
-            else  // a fixed joint: the parent's accelerations (the world's: zero)
-                for (const component_dof jc : later_dofs_of_component<Tree, i, o>) {
-                    if constexpr (p >= 0) A[i][jc.j] = A[p][jc.j];
-                    else A[i][jc.j] = screw<T>{};
-                }
-        });
+                A[i][j] = a;
+            }
+        }
         // the lower triangle, mirrored
         for (std::size_t r = 0; r < nv; ++r)
             for (std::size_t c = 0; c < Tree::v_offset[Tree::body_of_dof[r]]; ++c)

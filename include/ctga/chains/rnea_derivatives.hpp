@@ -41,6 +41,7 @@
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/tree_matrix.hpp"
+#include "ctga/chains/world_geometry.hpp"
 #include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/inertia_transform.hpp"
@@ -62,70 +63,20 @@ struct rnea_partials {
 
 namespace algorithm_detail {
 
-// A tree's shape as tables for loops at run time: for body b, the dofs of its ancestors are
-// supporting_dofs[first[b] … first[b + 1]); on_world[k]: dof k's body hangs from the world.
-template <class Tree>
-struct branch_tables {
-    static constexpr auto first = [] {
-        std::array<std::size_t, Tree::size + 1> f{};
-        for (std::size_t b = 0; b < Tree::size; ++b) {
-            std::size_t c = 0;
-            for (int a = Tree::parent[b]; a >= 0; a = Tree::parent[static_cast<std::size_t>(a)]) c += Tree::nv_of[static_cast<std::size_t>(a)];
-            f[b + 1] = f[b] + c;
-        }
-        return f;
-    }();
-    static constexpr auto supporting_dofs = [] {
-        std::array<std::size_t, first[Tree::size]> d{};
-        for (std::size_t b = 0; b < Tree::size; ++b) {
-            std::size_t c = first[b];
-            for (int a = Tree::parent[b]; a >= 0; a = Tree::parent[static_cast<std::size_t>(a)])
-                for (std::size_t k = 0; k < Tree::nv_of[static_cast<std::size_t>(a)]; ++k) d[c++] = Tree::v_offset[static_cast<std::size_t>(a)] + k;
-        }
-        return d;
-    }();
-    static constexpr auto on_world = [] {
-        std::array<bool, Tree::nv> w{};
-        for (std::size_t k = 0; k < Tree::nv; ++k) w[k] = Tree::parent[Tree::body_of_dof[k]] < 0;
-        return w;
-    }();
-};
-
 // The world-frame numbers of the recursion: per body its composites, per dof its columns.
 template <class Tree, class T>
-struct derivative_pass {
-    std::array<motor_map<T>, Tree::size> pose;
-    std::array<body_inertia<T>, Tree::size> N;      // each body's own inertia (its frame, then the world's)
+struct derivative_pass : world_geometry<Tree, T> {
     std::array<screw<T>, Tree::size> v, a;         // world velocity and acceleration (−g at the world)
     std::array<body_inertia<T>, Tree::size> Nc, Nc_rate;
     std::array<coscrew<T>, Tree::size> Hc, Fc;     // composite momentum and force
-    std::array<screw<T>, Tree::nv> S, Psi_d, Psi_dd, Phi;
+    std::array<screw<T>, Tree::nv> Psi_d, Psi_dd, Phi;
 
     explicit constexpr derivative_pass(uninitialized_t)
-        : v(uninitialized_array<screw<T>, Tree::size>()), a(uninitialized_array<screw<T>, Tree::size>()),
-          Hc(uninitialized_array<coscrew<T>, Tree::size>()), Fc(uninitialized_array<coscrew<T>, Tree::size>()),
-          S(uninitialized_array<screw<T>, Tree::nv>()), Psi_d(uninitialized_array<screw<T>, Tree::nv>()),
+        : world_geometry<Tree, T>(uninitialized), v(uninitialized_array<screw<T>, Tree::size>()),
+          a(uninitialized_array<screw<T>, Tree::size>()), Hc(uninitialized_array<coscrew<T>, Tree::size>()),
+          Fc(uninitialized_array<coscrew<T>, Tree::size>()), Psi_d(uninitialized_array<screw<T>, Tree::nv>()),
           Psi_dd(uninitialized_array<screw<T>, Tree::nv>()), Phi(uninitialized_array<screw<T>, Tree::nv>()) {}
 };
-
-// What depends on the joints' types, body by body (unrolled): world poses, the dofs' S in the
-// world frame (an axis joint's blade moved out: 6m 3a), each body's inertia.
-template <class Tree, class T>
-constexpr void derivative_geometry(derivative_pass<Tree, T>& d, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        using J = typename Tree::template joint_at<i>;
-        const auto& L = m.template link<i>();
-        const motor_map<T> X = joint_map<i>(m, q);
-        if constexpr (p < 0) d.pose[i] = X;
-        else d.pose[i] = compose(d.pose[p], X);
-        [&]<std::size_t... K>(std::index_sequence<K...>) {
-            ((d.S[Tree::v_offset[i] + K] = frame_detail::moved_out(d.pose[i], J::template subspace<K, T>(L.joint))), ...);
-        }(std::make_index_sequence<J::nv>{});
-        d.N[i] = L.inertia;
-    });
-}
 
 // The rest is the same for every joint, in the world frame: a loop over the bodies at run time,
 // compiled once for any tree. Forwards: velocities, accelerations, the dofs' Ψ̇, Ψ̈, Φ, each body's
@@ -195,8 +146,8 @@ constexpr void derivative_backward(derivative_pass<Tree, T>& d, rnea_partials<Tr
             }
             // the ancestors' rows of this column, and this row's entries in their columns
             const coscrew<T> dFq = dF + coadjoint(S, d.Fc[j]);
-            for (std::size_t e = tables::first[j]; e < tables::first[j + 1]; ++e) {
-                const std::size_t k = tables::supporting_dofs[e];
+            for (std::size_t e = tables::supporting.first[j]; e < tables::supporting.first[j + 1]; ++e) {
+                const std::size_t k = tables::supporting.list[e];
                 out.dtau_dq(k, c) = pairing(dFq, d.S[k]);
                 out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
                 out.M(k, c) = out.M(c, k) = pairing(r1, d.S[k]);
@@ -239,7 +190,7 @@ private:
         static_assert(!Tree::has_mimic, "ctga::chains::rnea_derivatives: trees with mimic joints are not supported yet");
         using namespace algorithm_detail;
         derivative_pass<Tree, T> d{uninitialized};
-        derivative_geometry(d, m, q);
+        fill_world_geometry(d, m, q);
         derivative_forward(d, m.gravity, qd.data(), qdd.data(), f_ext);
         rnea_partials<Tree, T> out{{}, tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                    tree_matrix<Tree, T, sparsity::branches>(uninitialized),

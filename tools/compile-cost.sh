@@ -9,6 +9,8 @@
 #                                     26 frames): RNEA, ABA, CRBA, four feet's frame Jacobians; at
 #                                     -O2; (b5) the same with J̇, the centre of mass and the
 #                                     centroidal momentum matrix
+#   (b6) bench/compile/arm7_derivatives.cpp  the arm's rnea_derivatives and aba_derivatives (with
+#                                     minverse), at -O2
 #   (c) the heaviest test unit         only with --with-heaviest (about 30 s)
 #   (d) bench/compile/generators.cpp   one algebra of n generators and one geometric product of
 #                                     two general vectors, bivectors, even elements and general
@@ -129,6 +131,8 @@ measure_unit "(b4) quadruped + frames, -O2" bench/compile/quadruped_frames.cpp "
     "$(measure_cmd "$root/bench/compile/quadruped_frames.cpp" "-I$gen -O2")"
 measure_unit "(b5) … + J̇, CoM, CMM, -O2" bench/compile/quadruped_frames.cpp "$ref_dir" \
     "$(measure_cmd "$root/bench/compile/quadruped_frames.cpp" "-I$gen -O2 -DCTGA_MORE")"
+measure_unit "(b6) arm7 RNEA+ABA derivatives, -O2" bench/compile/arm7_derivatives.cpp "$ref_dir" \
+    "$(measure_cmd "$root/bench/compile/arm7_derivatives.cpp" "-O2")"
 if ((with_heaviest)); then
     compile_db_read "$db" "${heaviest//./\\.}\$"
     ((${#cdb_files[@]} == 1)) || { echo "compile-cost: $heaviest not in $db (configure with CTGA_BUILD_TESTS=ON)" >&2; exit 1; }

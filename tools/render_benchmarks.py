@@ -80,6 +80,43 @@ CHAIN_TARGET = {("rnea", "arm7"): 1.0, ("aba", "arm7"): 1.0, ("crba", "arm7"): 1
                 ("jacobian", "tree"): 1.0, ("rnea", "tree"): 1.0, ("aba", "tree"): 1.0}
 
 
+# issue 28: time targets (ns) of the analytical derivatives; the legged tree stands for a merged
+# quadruped. Every derivative ≥ 4× faster than the same algorithm on dual numbers.
+DERIVATIVE_TARGET = {("rnea_derivatives", "arm7"): 1000, ("aba_derivatives", "arm7"): 1700, ("minverse", "arm7"): 500,
+                     ("rnea_derivatives", "tree"): 2500, ("aba_derivatives", "tree"): 4500, ("minverse", "tree"): 1300}
+
+
+def fmt_error(x):
+    return "—" if x is None else f"{x:.1e}"
+
+
+def derivatives_section(chains_json):
+    _, t = medians(chains_json)
+    _, err = medians(chains_json, "max_error")
+    out = ["### Derivatives of the dynamics", "",
+           "∂τ/∂q, ∂τ/∂q̇ (rnea_derivatives), ∂q̈/∂q, ∂q̈/∂q̇, ∂q̈/∂τ (aba_derivatives) and H⁻¹ (minverse):",
+           "ctga's analytical recursions (`chains/rnea_derivatives.hpp`, …), the same RNEA / ABA on",
+           "forward-mode dual numbers of nv partials, and central differences of RNEA / ABA (step 1e-6).",
+           "error: the largest |D − D_ref| / max |D_ref| over the matrices and 8 states, D_ref by dual",
+           "numbers in long double. Targets (issue 28; the legged tree stands for a merged quadruped):",
+           "the time, and ≥ 4× faster than the duals.", "",
+           "| derivative | tree | ctga | dual | fd | dual/ctga | error ctga | error dual | error fd |",
+           "| --- | --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for tree, _ in CHAIN_TREES:
+        for a in ["rnea_derivatives", "aba_derivatives", "minverse"]:
+            name = f"{a}_{tree}"
+            c, du, fd = t.get((name, "ctga")), t.get((name, "dual")), t.get((name, "fd"))
+            if c is None:
+                continue
+            mark = verdict(c, DERIVATIVE_TARGET[(a, tree)]) if (a, tree) in DERIVATIVE_TARGET else ""
+            speed = du / c if du else None
+            out.append(f"| {a} | {tree} | {fmt_time(c)}{mark} | {fmt_time(du)} | {fmt_time(fd)} | "
+                       f"{ratio(du, c, 1)}{verdict(None if speed is None else -speed, -4.0)} | "
+                       f"{fmt_error(err.get((name, 'ctga')))} | {fmt_error(err.get((name, 'dual')))} | "
+                       f"{fmt_error(err.get((name, 'fd')))} |")
+    return out + [""]
+
+
 def chains_section(chains_json, chains_instr, scaling_svg, scaling_jsons):
     _, t = medians(chains_json)
     ins = instructions(chains_instr)
@@ -105,6 +142,7 @@ def chains_section(chains_json, chains_instr, scaling_svg, scaling_jsons):
     out += ["", "Trees: " + "; ".join(f"**{k}** {d}" for k, d in CHAIN_TREES) + ".",
             "Targets (✓/✗): issue 15, on the arm ctga/spatial ≤ 1.0 for RNEA and ABA, ≤ 1.2 for CRBA; issue 27,",
             "frame Jacobians ≤ 1.0, and RNEA and ABA of the legged tree (a merged quadruped) ≤ 1.0.", ""]
+    out += derivatives_section(chains_json)
     # scaling: time against the number of bodies
     series = {}
     for path in scaling_jsons:

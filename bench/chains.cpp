@@ -10,7 +10,6 @@
 //   ctga_chains_bench --repeat NAME N        call one kernel N times and exit
 #include <vector>
 
-#include "chains_derivatives.hpp"
 #include "chains_kernels.hpp"
 
 int main(int argc, char** argv) {

@@ -197,8 +197,4 @@ void add_derivatives(std::vector<entry>& table, const std::string& label, const 
     add_derivative<dynamics::inverse_mass, differentiation::ctga>(table, "minverse_" + label + "/ctga", d);
 }
 
-void add_derivatives_arm7(std::vector<entry>& table);
-void add_derivatives_chain30(std::vector<entry>& table);
-void add_derivatives_legged(std::vector<entry>& table);
-
 }  // namespace bench::chains

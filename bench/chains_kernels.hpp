@@ -111,5 +111,8 @@ void add_chain30(std::vector<entry>& table);  // RNEA and ABA
 void add_chain30_crba_fk(std::vector<entry>& table);
 void add_legged(std::vector<entry>& table);
 void add_scaling(std::vector<entry>& table);  // CTGA_CHAINS_SCALING: chains of those sizes
+void add_derivatives_arm7(std::vector<entry>& table);  // the derivatives (chains_derivatives.hpp)
+void add_derivatives_chain30(std::vector<entry>& table);
+void add_derivatives_legged(std::vector<entry>& table);
 
 }  // namespace bench::chains

@@ -19,11 +19,8 @@
 #include <array>
 #include <cstddef>
 #include <limits>
-#include <type_traits>
 #include <utility>
 
-#include "ctga/chains/frame_jacobian.hpp"
-#include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/tree_matrix.hpp"
 #include "ctga/chains/world_geometry.hpp"
@@ -34,7 +31,6 @@
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/mechanics/screw.hpp"
 #include "ctga/support/cholesky.hpp"
-#include "ctga/support/inline.hpp"
 #include "ctga/support/uninitialized.hpp"
 
 namespace ctga::chains {

@@ -34,10 +34,8 @@
 
 #include <array>
 #include <cstddef>
-#include <type_traits>
 #include <utility>
 
-#include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/tree_matrix.hpp"
@@ -48,7 +46,6 @@
 #include "ctga/mechanics/momentum.hpp"
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/mechanics/screw.hpp"
-#include "ctga/support/inline.hpp"
 #include "ctga/support/uninitialized.hpp"
 
 namespace ctga::chains {

@@ -160,6 +160,9 @@ double world_floating_translation_columns(const fs::model& m, const MatrixXd& J)
     return e;
 }
 
+// an nv × nv matrix
+bool square(const MatrixXd& x, int nv) { return x.rows() == nv && x.cols() == nv; }
+
 }  // namespace
 
 TEST_CASE("featherstone derivatives: RNEA against central differences", "[featherstone][derivatives]") {
@@ -170,10 +173,8 @@ TEST_CASE("featherstone derivatives: RNEA against central differences", "[feathe
         const fs::model& m = p.m;
         const int nv = m.nv();
         const fs::rnea_partials r = fs::rnea_derivatives(m, p.q, p.v, p.a, p.f);
-        REQUIRE(r.dtau_dq.rows() == nv);
-        REQUIRE(r.dtau_dq.cols() == nv);
-        REQUIRE(r.dtau_dv.rows() == nv);
-        REQUIRE(r.dtau_dv.cols() == nv);
+        REQUIRE(square(r.dtau_dq, nv));
+        REQUIRE(square(r.dtau_dv, nv));
         REQUIRE(r.tau.size() == nv);
         CHECK(W("tau vs fs::rnea", rel(r.tau, fs::rnea(m, p.q, p.v, p.a, p.f))) <= 1e-13);
         const MatrixXd Jq = fd_tangent(m, p.q, [&](const VectorXd& x) { return fs::rnea(m, x, p.v, p.a, p.f); });
@@ -196,12 +197,9 @@ TEST_CASE("featherstone derivatives: ABA against central differences, CRBA and R
         const int nv = m.nv();
         const VectorXd tau = fs::random_vector(rng, nv, 5.0);
         const fs::aba_partials r = fs::aba_derivatives(m, p.q, p.v, tau, p.f);
-        REQUIRE(r.dqdd_dq.rows() == nv);
-        REQUIRE(r.dqdd_dq.cols() == nv);
-        REQUIRE(r.dqdd_dv.rows() == nv);
-        REQUIRE(r.dqdd_dv.cols() == nv);
-        REQUIRE(r.dqdd_dtau.rows() == nv);
-        REQUIRE(r.dqdd_dtau.cols() == nv);
+        REQUIRE(square(r.dqdd_dq, nv));
+        REQUIRE(square(r.dqdd_dv, nv));
+        REQUIRE(square(r.dqdd_dtau, nv));
         REQUIRE(r.qdd.size() == nv);
         CHECK(W("qdd vs fs::aba", rel(r.qdd, fs::aba(m, p.q, p.v, tau, p.f))) <= 1e-11);   // rounding x cond(H)
         const MatrixXd Jq = fd_tangent(m, p.q, [&](const VectorXd& x) { return fs::aba(m, x, p.v, tau, p.f); });

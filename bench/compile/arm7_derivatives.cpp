@@ -5,14 +5,11 @@
 
 int main(int argc, char** argv) {
     // run-time inputs, so that nothing is folded away
-    const double x = argc > 1 ? std::atof(argv[1]) : 0.3;
+    const arm7_state s(argc > 1 ? std::atof(argv[1]) : 0.3);
     const std::optional<ch::model<arm7>> m = arm7_model();
     if (!m) return 1;
-    ch::configuration<arm7> q{};
-    ch::joint_vector<arm7> qd{}, qdd{};
-    for (std::size_t i = 0; i < 7; ++i) q[i] = x * static_cast<double>(i), qd[i] = x, qdd[i] = -x;
-    const auto id = ch::rnea_derivatives(*m, q, qd, qdd);
-    const auto fd = ch::aba_derivatives(*m, q, qd, id.tau);
+    const auto id = ch::rnea_derivatives(*m, s.q, s.qd, s.qdd);
+    const auto fd = ch::aba_derivatives(*m, s.q, s.qd, id.tau);
     std::printf("%g %g %g %g\n", id.dtau_dq(3, 2), id.dtau_dv(5, 1), fd.dqdd_dq(2, 4), fd.Minv(6, 0));
     return 0;
 }

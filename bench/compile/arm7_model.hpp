@@ -14,6 +14,15 @@ using arm7 = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_y>,
                       ch::link<2, ch::revolute_y>, ch::link<3, ch::revolute_z>, ch::link<4, ch::revolute_y>,
                       ch::link<5, ch::revolute_z>>;
 
+// q = x i, q̇ = x, q̈ = −x for joint i: a state from one run-time number.
+struct arm7_state {
+    ch::configuration<arm7> q{};
+    ch::joint_vector<arm7> qd{}, qdd{};
+    explicit arm7_state(double x) {
+        for (std::size_t i = 0; i < 7; ++i) q[i] = x * static_cast<double>(i), qd[i] = x, qdd[i] = -x;
+    }
+};
+
 inline std::optional<ch::model<arm7>> arm7_model() {
     ch::model<arm7> m;
     bool ok = true;

@@ -10,10 +10,10 @@
 // components' pattern, ∂τ its branches', so ∂q̈ has the components' (tree_matrix.hpp).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <utility>
 
-#include "ctga/chains/aba.hpp"
 #include "ctga/chains/minverse.hpp"
 #include "ctga/chains/rnea_derivatives.hpp"
 #include "ctga/chains/tree_matrix.hpp"
@@ -30,9 +30,10 @@ struct aba_partials {
 
 namespace algorithm_detail {
 // −A B for A of the components' pattern and B of the branches', row by row: row i of the product
-// is −Σ_k A(i, k) B(k, ·) over the k where A's row has structural entries (a compile-time
-// list), each a contiguous multiply-add over B's row, which the compiler vectorises; B's zeros
-// are stored zeros, so the row stays in the components' pattern.
+// is −Σ_k A(i, k) B(k, ·) over the k where A's row has structural entries, each a contiguous
+// multiply-add over B's whole row, which the compiler vectorises (B's zeros are stored zeros, so
+// the row stays in the components' pattern; skipping them by runs of structural columns measured
+// slower: 30.7 against 23.0 µs on the 30-body chain, 10.0 against 8.8 µs on the legged tree).
 template <class Tree, class T>
 constexpr tree_matrix<Tree, T, sparsity::components> minus_product(const tree_matrix<Tree, T, sparsity::components>& A,
                                                                    const tree_matrix<Tree, T, sparsity::branches>& B) noexcept {
@@ -50,6 +51,12 @@ constexpr tree_matrix<Tree, T, sparsity::components> minus_product(const tree_ma
     }
     return out;
 }
+
+// ∂τ/∂q and ∂τ/∂q̇ without τ and M (derivative_backward writes what its output has).
+template <class Tree, class T>
+struct inverse_partials {
+    tree_matrix<Tree, T, sparsity::branches> dtau_dq{uninitialized}, dtau_dv{uninitialized};
+};
 }  // namespace algorithm_detail
 
 struct aba_derivatives_t {
@@ -67,15 +74,29 @@ struct aba_derivatives_t {
     }
 
 private:
-    // H⁻¹, q̈ by ABA, and ∂τ at q̈.
+    // One world geometry for all: H⁻¹ and q̈ by the articulated-body recursion (minverse.hpp, with
+    // the bias), then ∂τ at q̈ (rnea_derivatives.hpp) from the same velocities.
     template <class Tree, class T>
     static constexpr aba_partials<Tree, T> run(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
                                                const body_wrenches<Tree, T>* f_ext) noexcept {
-        const tree_matrix<Tree, T, sparsity::components> Minv = minverse(m, q);
-        const joint_vector<Tree, T> qdd = f_ext ? aba(m, q, qd, tau, *f_ext) : aba(m, q, qd, tau);
-        const rnea_partials<Tree, T> id = f_ext ? rnea_derivatives(m, q, qd, qdd, *f_ext) : rnea_derivatives(m, q, qd, qdd);
-        return {qdd, algorithm_detail::minus_product(Minv, id.dtau_dq), algorithm_detail::minus_product(Minv, id.dtau_dv), Minv};
+        static_assert(!Tree::has_mimic, "ctga::chains::aba_derivatives: trees with mimic joints are not supported yet");
+        using namespace algorithm_detail;
+        using C = tree_matrix<Tree, T, sparsity::components>;
+        derivative_pass<Tree, T> d{uninitialized};
+        fill_world_geometry(d, m, q);
+        for (std::size_t i = 0; i < Tree::size; ++i) derivative_velocities(d, i, qd.data(), f_ext);
+        aba_partials<Tree, T> out{{}, C(uninitialized), C(uninitialized), C(uninitialized)};
+        const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
+        articulated_bias<Tree, T> bias{tau.data(), d.Fc, d.c, a_world,
+                                       out.qdd.data(), {}, uninitialized_array<screw<T>, Tree::size>()};
+        articulated_recursion(d, out.Minv, bias);
+        for (std::size_t i = 0; i < Tree::size; ++i) derivative_accelerations(d, i, a_world, out.qdd.data());
+        inverse_partials<Tree, T> id;
+        derivative_backward(d, id);
+        out.dqdd_dq = minus_product(out.Minv, id.dtau_dq);
+        out.dqdd_dv = minus_product(out.Minv, id.dtau_dv);
+        return out;
     }
 };
 // The derivatives of q̈ = aba(m, q, q̇, τ[, f_ext]) with q̈ itself: aba_partials.

@@ -19,6 +19,7 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "ctga/chains/tree.hpp"
@@ -53,80 +54,187 @@ struct component_tables {
 };
 
 // D⁻¹ of a joint's D = Sᵀ N^A S (n × n, symmetric positive definite for a body with mass): 1/D
-// for one dof, by Cholesky otherwise (NaN when it is not positive definite: never a number
-// that looks fine).
+// for one dof, from its Cholesky factor otherwise (all NaN when it is not positive definite:
+// never a number that looks fine).
 template <std::size_t N, class T>
 constexpr std::array<std::array<T, N>, N> joint_inverse(const std::array<std::array<T, N>, N>& D) noexcept {
     if constexpr (N == 1) {
         return {{{T(1) / D[0][0]}}};
     } else {
-        std::array<std::array<T, N>, N> out{};
         const auto L = cholesky(D);
-        for (std::size_t c = 0; c < N; ++c) {
-            std::array<T, N> e{};
-            e[c] = T(1);
-            const std::array<T, N> x = L ? cholesky_solve(*L, e) : [] {
-                std::array<T, N> nan;
-                nan.fill(std::numeric_limits<T>::quiet_NaN());
-                return nan;
-            }();
-            for (std::size_t r = 0; r < N; ++r) out[r][c] = x[r];
-        }
-        return out;
+        if (L) return cholesky_inverse(*L);
+        std::array<std::array<T, N>, N> nan;
+        for (auto& row : nan) row.fill(std::numeric_limits<T>::quiet_NaN());
+        return nan;
     }
 }
 
+// What the recursion keeps: per body its articulated inertia, per dof U, U D⁻¹ and the bias
+// force F[j] passed up for column j.
+template <class Tree, class T>
+struct articulated_pass {
+    std::array<articulated_inertia<T>, Tree::size> NA;
+    std::array<coscrew<T>, Tree::nv> U, UD, F;
+
+    explicit constexpr articulated_pass(uninitialized_t)
+        : U(uninitialized_array<coscrew<T>, Tree::nv>()), UD(uninitialized_array<coscrew<T>, Tree::nv>()),
+          F(uninitialized_array<coscrew<T>, Tree::nv>()) {}
+};
+
+// One more right-hand side, τ − the bias forces, gives ABA's q̈ in the same passes (aba_derivatives):
+// with p_i = v_i ×* N_i v_i − f_ext,i and c_i = v_λ × v_i (the acceleration of the joint's motion,
+// Σ Ψ̇ q̇: rnea_derivatives.hpp), backwards u = τ − Sᵀ p^A, w = D⁻¹ u and the parent's
+// p^A += p^A + N^a c + U w (N^a = N^A − U D⁻¹ Uᵀ, Featherstone eq. 7.43 in the world frame, where
+// nothing is transformed); forwards a' = a_λ + c, q̈ = w − (U D⁻¹)ᵀ a', a = a' + S q̈, from
+// a = −g at the world.
+template <class Tree, class T>
+struct articulated_bias {
+    const T* tau;
+    std::array<coscrew<T>, Tree::size> p;          // v ×* N v − f_ext in; p^A as the bodies below add
+    const std::array<screw<T>, Tree::size>& c;     // v_λ × v
+    screw<T> a_world;                              // −g
+    T* qdd;                                        // out
+    std::array<T, Tree::nv> w;
+    std::array<screw<T>, Tree::size> a;
+};
+struct no_bias {};
+
 // Body j's step backwards, for a joint of K dofs (K = 1, or 6 for a floating joint): U, D⁻¹, the
 // columns of the bodies below, its own columns, and what its parent sees.
-template <std::size_t K, class Tree, class T>
-constexpr void minverse_backward_step(std::size_t j, const world_geometry<Tree, T>& g, std::array<articulated_inertia<T>, Tree::size>& NA,
-                                      std::array<coscrew<T>, Tree::nv>& U, std::array<coscrew<T>, Tree::nv>& UD,
-                                      std::array<coscrew<T>, Tree::nv>& F, tree_matrix<Tree, T, sparsity::components>& Minv) noexcept {
+template <std::size_t K, class Tree, class T, class Bias>
+constexpr void minverse_backward_step(std::size_t j, const world_geometry<Tree, T>& g, articulated_pass<Tree, T>& P,
+                                      tree_matrix<Tree, T, sparsity::components>& Minv, Bias& bias) noexcept {
     using tables = branch_tables<Tree>;
+    auto& [NA, U, UD, F] = P;
     const std::size_t o = Tree::v_offset[j];
     const int p = Tree::parent[j];
-    std::array<std::array<T, K>, K> D;
+    constexpr bool biased = !std::is_same_v<Bias, no_bias>;
+    std::array<std::array<T, K>, K> D;  // symmetric
     for (std::size_t c = 0; c < K; ++c) U[o + c] = momentum(NA[j], g.S[o + c]);
     for (std::size_t a = 0; a < K; ++a)
-        for (std::size_t b = 0; b < K; ++b) D[a][b] = pairing(U[o + b], g.S[o + a]);
+        for (std::size_t b = a; b < K; ++b) D[a][b] = D[b][a] = pairing(U[o + b], g.S[o + a]);
     const std::array<std::array<T, K>, K> Dinv = joint_inverse(D);
+    // S D⁻¹, so that a row D⁻¹ Sᵀ F is K pairings
+    std::array<screw<T>, K> SD;
     for (std::size_t c = 0; c < K; ++c) {
-        coscrew<T> x = U[o] * Dinv[0][c];
-        for (std::size_t b = 1; b < K; ++b) x = x + U[o + b] * Dinv[b][c];
-        UD[o + c] = x;
+        screw<T> x = g.S[o] * Dinv[0][c];
+        for (std::size_t b = 1; b < K; ++b) x = x + g.S[o + b] * Dinv[b][c];
+        SD[c] = x;
     }
-    // the columns of the bodies below: H⁻¹(j, i) = −D⁻¹ Sᵀ F[i], then F[i] += U H⁻¹(j, i)
+    // U D⁻¹, for the parent and the rows forwards (of a body on the world, only q̈ needs it)
+    if (p >= 0 || biased)
+        for (std::size_t c = 0; c < K; ++c) {
+            coscrew<T> x = U[o] * Dinv[0][c];
+            for (std::size_t b = 1; b < K; ++b) x = x + U[o + b] * Dinv[b][c];
+            UD[o + c] = x;
+        }
+    // the columns of the bodies below: H⁻¹(j, i) = −D⁻¹ Sᵀ F[i], then F[i] += U H⁻¹(j, i) for
+    // the parent (a body on the world has none)
     for (std::size_t e = tables::carried.first[j]; e < tables::carried.first[j + 1]; ++e) {
         const std::size_t i = tables::carried.list[e];
-        std::array<T, K> s;
-        for (std::size_t b = 0; b < K; ++b) s[b] = pairing(F[i], g.S[o + b]);
+        std::array<T, K> x;
         for (std::size_t c = 0; c < K; ++c) {
-            T x = Dinv[c][0] * s[0];
-            for (std::size_t b = 1; b < K; ++b) x += Dinv[c][b] * s[b];
-            Minv(o + c, i) = -x;
-            F[i] = F[i] - U[o + c] * x;
+            x[c] = pairing(F[i], SD[c]);
+            Minv(o + c, i) = -x[c];
         }
+        if (p >= 0)
+            for (std::size_t c = 0; c < K; ++c) F[i] = F[i] - U[o + c] * x[c];
     }
     // its own columns: H⁻¹ = D⁻¹ there, and F = U D⁻¹
     for (std::size_t c = 0; c < K; ++c) {
         for (std::size_t b = 0; b < K; ++b) Minv(o + b, o + c) = Dinv[b][c];
-        F[o + c] = UD[o + c];
+        if (p >= 0) F[o + c] = UD[o + c];
+    }
+    if constexpr (biased) {
+        std::array<T, K> u;
+        for (std::size_t b = 0; b < K; ++b) u[b] = bias.tau[o + b] - pairing(bias.p[j], g.S[o + b]);
+        for (std::size_t c = 0; c < K; ++c) {
+            T x = Dinv[c][0] * u[0];
+            for (std::size_t b = 1; b < K; ++b) x += Dinv[c][b] * u[b];
+            bias.w[o + c] = x;
+        }
     }
     // the parent sees N^A − U D⁻¹ Uᵀ (zero for a 6-dof joint, up to rounding)
     if (p < 0) return;
     const std::size_t q = static_cast<std::size_t>(p);
-    if constexpr (K == 1) {
-        NA[q] = NA[q] + minus_joint(NA[j], U[o], Dinv[0][0]);
-    } else {
-        articulated_inertia<T> x = NA[j];
-        for (std::size_t e = 0; e < 21; ++e) {
-            const auto rc = articulated_detail::upper_entries[e];
-            T y = x.n[e][0];
-            for (std::size_t b = 0; b < K; ++b) y -= UD[o + b][rc.i] * U[o + b][rc.j];
-            x.n[e] = typename articulated_inertia<T>::scalar{y};
+    const articulated_inertia<T> Na = [&] {
+        if constexpr (K == 1) {
+            return minus_joint(NA[j], U[o], Dinv[0][0]);
+        } else {
+            articulated_inertia<T> x = NA[j];
+            for (std::size_t e = 0; e < 21; ++e) {
+                const auto rc = articulated_detail::upper_entries[e];
+                T y = x.n[e][0];
+                for (std::size_t b = 0; b < K; ++b) y -= UD[o + b][rc.i] * U[o + b][rc.j];
+                x.n[e] = typename articulated_inertia<T>::scalar{y};
+            }
+            return x;
         }
-        NA[q] = NA[q] + x;
+    }();
+    NA[q] = NA[q] + Na;
+    if constexpr (biased) {
+        coscrew<T> x = bias.p[j] + momentum(Na, bias.c[j]);
+        for (std::size_t c = 0; c < K; ++c) x = x + U[o + c] * bias.w[o + c];
+        bias.p[q] = bias.p[q] + x;
     }
+}
+
+// H⁻¹ from the world geometry (and, with a bias, q̈): backwards, then each body's rows forwards,
+// then the lower triangle mirrored.
+template <class Tree, class T, class Bias>
+constexpr void articulated_recursion(const world_geometry<Tree, T>& g, tree_matrix<Tree, T, sparsity::components>& Minv,
+                                     Bias& bias) noexcept {
+    constexpr std::size_t n = Tree::size, nv = Tree::nv;
+    constexpr bool biased = !std::is_same_v<Bias, no_bias>;
+    articulated_pass<Tree, T> P{uninitialized};
+    for (std::size_t i = 0; i < n; ++i) P.NA[i] = articulated_inertia_of(g.N[i]);
+    // backwards: D⁻¹, the columns below each body, the articulated inertias
+    for (std::size_t j = n; j-- > 0;) {
+        const std::size_t k = Tree::nv_of[j];
+        if (k == 1) minverse_backward_step<1>(j, g, P, Minv, bias);
+        else if constexpr (branch_tables<Tree>::multi_dof) {
+            if (k == 6) minverse_backward_step<6>(j, g, P, Minv, bias);
+        }
+        if (k == 0 && Tree::parent[j] >= 0) {
+            const std::size_t q = static_cast<std::size_t>(Tree::parent[j]);
+            P.NA[q] = P.NA[q] + P.NA[j];
+            if constexpr (biased) bias.p[q] = bias.p[q] + bias.p[j];  // (c = 0: the body moves with its parent)
+        }
+    }
+    // forwards: each body's rows over the later columns of its component, with its parent's
+    // accelerations for them (the world's: zero)
+    auto A = []<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<std::array<screw<T>, nv>, n>{((void)I, uninitialized_array<screw<T>, nv>())...};
+    }(std::make_index_sequence<n>{});
+    using later = component_tables<Tree>;
+    for (std::size_t i = 0; i < n; ++i) {
+        const int p = Tree::parent[i];
+        const std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];
+        for (std::size_t e = later::later.first[i]; e < later::later.first[i + 1]; ++e) {
+            const auto [j, carried] = later::later.list[e];
+            screw<T> a = p < 0 ? screw<T>{} : A[static_cast<std::size_t>(p)][j];
+            for (std::size_t c = o; c < o + k; ++c) {
+                T x = carried ? Minv(c, j) : T(0);  // (set backwards)
+                if (p >= 0) x -= pairing(P.UD[c], A[static_cast<std::size_t>(p)][j]);
+                Minv(c, j) = x;
+                a = a + g.S[c] * x;
+            }
+            A[i][j] = a;
+        }
+        if constexpr (biased) {
+            const screw<T> a_c = (p < 0 ? bias.a_world : bias.a[static_cast<std::size_t>(p)]) + bias.c[i];
+            screw<T> a = a_c;
+            for (std::size_t c = o; c < o + k; ++c) {
+                bias.qdd[c] = bias.w[c] - pairing(P.UD[c], a_c);
+                a = a + g.S[c] * bias.qdd[c];
+            }
+            bias.a[i] = a;
+        }
+    }
+    // the lower triangle, mirrored
+    for (std::size_t r = 0; r < nv; ++r)
+        for (std::size_t c = 0; c < Tree::v_offset[Tree::body_of_dof[r]]; ++c)
+            if (Minv.pattern[r][c]) Minv(r, c) = Minv(c, r);
 }
 
 }  // namespace algorithm_detail
@@ -137,49 +245,11 @@ struct minverse_t {
                                                                                  const configuration<Tree, T>& q) const noexcept {
         static_assert(!Tree::has_mimic, "ctga::chains::minverse: trees with mimic joints are not supported yet");
         using namespace algorithm_detail;
-        constexpr std::size_t n = Tree::size, nv = Tree::nv;
         tree_matrix<Tree, T, sparsity::components> Minv(uninitialized);
         world_geometry<Tree, T> g{uninitialized};
         fill_world_geometry(g, m, q);
-        // the rest is the same for every joint in the world frame: loops over the bodies
-        std::array<articulated_inertia<T>, n> NA;
-        for (std::size_t i = 0; i < n; ++i) NA[i] = articulated_inertia_of(transform(g.pose[i], g.N[i]));
-        auto U = uninitialized_array<coscrew<T>, nv>(), UD = uninitialized_array<coscrew<T>, nv>();
-        auto F = uninitialized_array<coscrew<T>, nv>();
-        // backwards: D⁻¹, the columns below each body, the articulated inertias
-        for (std::size_t j = n; j-- > 0;) {
-            const std::size_t k = Tree::nv_of[j];
-            if (k == 1) minverse_backward_step<1>(j, g, NA, U, UD, F, Minv);
-            else if constexpr (branch_tables<Tree>::multi_dof) {
-                if (k == 6) minverse_backward_step<6>(j, g, NA, U, UD, F, Minv);
-            }
-            if (k == 0 && Tree::parent[j] >= 0) NA[static_cast<std::size_t>(Tree::parent[j])] = NA[static_cast<std::size_t>(Tree::parent[j])] + NA[j];
-        }
-        // forwards: each body's rows over the later columns of its component, with its parent's
-        // accelerations for them (the world's: zero)
-        auto A = []<std::size_t... I>(std::index_sequence<I...>) {
-            return std::array<std::array<screw<T>, nv>, n>{((void)I, uninitialized_array<screw<T>, nv>())...};
-        }(std::make_index_sequence<n>{});
-        using later = component_tables<Tree>;
-        for (std::size_t i = 0; i < n; ++i) {
-            const int p = Tree::parent[i];
-            const std::size_t o = Tree::v_offset[i], k = Tree::nv_of[i];
-            for (std::size_t e = later::later.first[i]; e < later::later.first[i + 1]; ++e) {
-                const auto [j, carried] = later::later.list[e];
-                screw<T> a = p < 0 ? screw<T>{} : A[static_cast<std::size_t>(p)][j];
-                for (std::size_t c = o; c < o + k; ++c) {
-                    T x = carried ? Minv(c, j) : T(0);  // (set backwards)
-                    if (p >= 0) x -= pairing(UD[c], A[static_cast<std::size_t>(p)][j]);
-                    Minv(c, j) = x;
-                    a = a + g.S[c] * x;
-                }
-                A[i][j] = a;
-            }
-        }
-        // the lower triangle, mirrored
-        for (std::size_t r = 0; r < nv; ++r)
-            for (std::size_t c = 0; c < Tree::v_offset[Tree::body_of_dof[r]]; ++c)
-                if (Minv.pattern[r][c]) Minv(r, c) = Minv(c, r);
+        no_bias none;
+        articulated_recursion(g, Minv, none);
         return Minv;
     }
 };

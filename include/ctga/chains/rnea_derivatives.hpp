@@ -63,62 +63,75 @@ namespace algorithm_detail {
 // The world-frame numbers of the recursion: per body its composites, per dof its columns.
 template <class Tree, class T>
 struct derivative_pass : world_geometry<Tree, T> {
-    std::array<screw<T>, Tree::size> v, a;         // world velocity and acceleration (−g at the world)
+    std::array<screw<T>, Tree::size> v, a, c;      // world velocity, acceleration (−g at the world), v_λ × v
     std::array<body_inertia<T>, Tree::size> Nc, Nc_rate;
     std::array<coscrew<T>, Tree::size> Hc, Fc;     // composite momentum and force
     std::array<screw<T>, Tree::nv> Psi_d, Psi_dd, Phi;
 
     explicit constexpr derivative_pass(uninitialized_t)
         : world_geometry<Tree, T>(uninitialized), v(uninitialized_array<screw<T>, Tree::size>()),
-          a(uninitialized_array<screw<T>, Tree::size>()), Hc(uninitialized_array<coscrew<T>, Tree::size>()),
+          a(uninitialized_array<screw<T>, Tree::size>()), c(uninitialized_array<screw<T>, Tree::size>()), Hc(uninitialized_array<coscrew<T>, Tree::size>()),
           Fc(uninitialized_array<coscrew<T>, Tree::size>()), Psi_d(uninitialized_array<screw<T>, Tree::nv>()),
           Psi_dd(uninitialized_array<screw<T>, Tree::nv>()), Phi(uninitialized_array<screw<T>, Tree::nv>()) {}
 };
 
-// The rest is the same for every joint, in the world frame: a loop over the bodies at run time,
-// compiled once for any tree. Forwards: velocities, accelerations, the dofs' Ψ̇, Ψ̈, Φ, each body's
-// N, Ṅ, h = N v and f = N a + v ×* h − f_ext as the composites' first terms.
+// The rest is the same for every joint, in the world frame: loops over the bodies at run time,
+// compiled once for any tree. Forwards, first what the velocities give: v, the dofs' Ψ̇ and Φ,
+// c = Σ Ψ̇ q̇ = v_λ × v (the acceleration of the joints' motion), and each body's N, Ṅ, h = N v
+// and v ×* h − f_ext (f's velocity terms) as the composites' first terms …
 template <class Tree, class T>
-constexpr void derivative_forward(derivative_pass<Tree, T>& d, const vec3<T>& gravity, const T* qd, const T* qdd,
-                                  const body_wrenches<Tree, T>* f_ext) noexcept {
-    const screw<T> a_world{T(0), T(0), T(0), -gravity[0], -gravity[1], -gravity[2]};
-    for (std::size_t i = 0; i < Tree::size; ++i) {
+constexpr void derivative_velocities(derivative_pass<Tree, T>& d, std::size_t i, const T* qd, const body_wrenches<Tree, T>* f_ext) noexcept {
+    {
         const int p = Tree::parent[i];
         const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
-        const screw<T> a_p = p < 0 ? a_world : d.a[static_cast<std::size_t>(p)];
         const screw<T> v_p = p < 0 ? screw<T>{} : d.v[static_cast<std::size_t>(p)];
-        screw<T> v = v_p, a = a_p;
+        screw<T> v = v_p, c{};
         for (std::size_t k = o; k < o + nv; ++k) {
-            const screw<T>& S = d.S[k];
-            if (p < 0) {  // the world does not move: Ψ̇ = 0
-                d.Psi_d[k] = screw<T>{};
-                d.Psi_dd[k] = bracket(a_p, S);
-            } else {
-                d.Psi_d[k] = bracket(v_p, S);
-                d.Psi_dd[k] = bracket(a_p, S) + bracket(v_p, d.Psi_d[k]);
-            }
-            // a = a_λ + Σ S q̈ + v × S q̇, and v × S = v_λ × S = Ψ̇
-            v = v + S * qd[k];
-            a = a + S * qdd[k] + d.Psi_d[k] * qd[k];
+            // the world does not move: Ψ̇ = 0 on it
+            if (p < 0) d.Psi_d[k] = screw<T>{};
+            else d.Psi_d[k] = bracket(v_p, d.S[k]);
+            v = v + d.S[k] * qd[k];
+            c = c + d.Psi_d[k] * qd[k];
         }
         // Φ = Ψ̇ + v_j × S: 2Ψ̇ for one dof (v_j × S = v_λ × S), else with the joint's own motion
         for (std::size_t k = o; k < o + nv; ++k)
             d.Phi[k] = nv == 1 ? screw<T>(d.Psi_d[k] + d.Psi_d[k]) : screw<T>(d.Psi_d[k] + bracket(v, d.S[k]));
         d.v[i] = v;
-        d.a[i] = a;
-        const body_inertia<T> N = transform(d.pose[i], d.N[i]);
+        d.c[i] = c;
+        const body_inertia<T>& N = d.N[i];
         d.Nc[i] = N;
         d.Nc_rate[i] = inertia_rate(N, v);
         d.Hc[i] = momentum(N, v);
-        d.Fc[i] = momentum(N, a) + coadjoint(v, d.Hc[i]);
+        d.Fc[i] = coadjoint(v, d.Hc[i]);
         if (f_ext) d.Fc[i] = d.Fc[i] - transform(d.pose[i], (*f_ext)[i]);
+    }
+}
+// … then what the accelerations give: a = a_λ + c + Σ S q̈ (−g at the world), Ψ̈ and f's N a.
+template <class Tree, class T>
+constexpr void derivative_accelerations(derivative_pass<Tree, T>& d, std::size_t i, const screw<T>& a_world, const T* qdd) noexcept {
+    {
+        const int p = Tree::parent[i];
+        const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
+        const screw<T> a_p = p < 0 ? a_world : d.a[static_cast<std::size_t>(p)];
+        screw<T> a = a_p + d.c[i];
+        for (std::size_t k = o; k < o + nv; ++k) {
+            const screw<T>& S = d.S[k];
+            if (p < 0) d.Psi_dd[k] = bracket(a_p, S);  // Ψ̇ = 0
+            else d.Psi_dd[k] = bracket(a_p, S) + bracket(d.v[static_cast<std::size_t>(p)], d.Psi_d[k]);
+            a = a + S * qdd[k];
+        }
+        d.a[i] = a;
+        d.Fc[i] = d.Fc[i] + momentum(d.N[i], a);
     }
 }
 
 // Backwards: body j's composites are complete when it is reached (its children, later bodies,
-// have added theirs); then its dofs' columns and rows, and its composites go to its parent.
-template <class Tree, class T>
-constexpr void derivative_backward(derivative_pass<Tree, T>& d, rnea_partials<Tree, T>& out) noexcept {
+// have added theirs); then its dofs' columns and rows, and its composites go to its parent. Out
+// has dtau_dq and dtau_dv, and τ and M where it has them (rnea_partials; aba_derivatives needs
+// neither).
+template <class Tree, class T, class Out>
+constexpr void derivative_backward(derivative_pass<Tree, T>& d, Out& out) noexcept {
+    constexpr bool mass = requires { out.M; };
     using tables = branch_tables<Tree>;
     for (std::size_t j = Tree::size; j-- > 0;) {
         const int p = Tree::parent[j];
@@ -134,12 +147,12 @@ constexpr void derivative_backward(derivative_pass<Tree, T>& d, rnea_partials<Tr
             const coscrew<T> dF = p < 0 ? momentum(d.Nc[j], d.Psi_dd[c])
                                         : coscrew<T>(momentum(d.Nc[j], d.Psi_dd[c]) + momentum(d.Nc_rate[j], d.Psi_d[c]) +
                                                      coadjoint(d.Psi_d[c], d.Hc[j]));
-            out.tau[c] = pairing(d.Fc[j], S);
+            if constexpr (mass) out.tau[c] = pairing(d.Fc[j], S);
             // the joint's own block
             for (std::size_t k = o; k < o + nv; ++k) {
                 out.dtau_dq(k, c) = pairing(dF, d.S[k]);
                 out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
-                out.M(k, c) = pairing(r1, d.S[k]);
+                if constexpr (mass) out.M(k, c) = pairing(r1, d.S[k]);
             }
             // the ancestors' rows of this column, and this row's entries in their columns
             const coscrew<T> dFq = dF + coadjoint(S, d.Fc[j]);
@@ -147,7 +160,7 @@ constexpr void derivative_backward(derivative_pass<Tree, T>& d, rnea_partials<Tr
                 const std::size_t k = tables::supporting.list[e];
                 out.dtau_dq(k, c) = pairing(dFq, d.S[k]);
                 out.dtau_dv(k, c) = pairing(dFv, d.S[k]);
-                out.M(k, c) = out.M(c, k) = pairing(r1, d.S[k]);
+                if constexpr (mass) out.M(k, c) = out.M(c, k) = pairing(r1, d.S[k]);
                 out.dtau_dv(c, k) = pairing(r2, d.S[k]) + pairing(r1, d.Phi[k]);
                 out.dtau_dq(c, k) = tables::on_world[k] ? pairing(r1, d.Psi_dd[k])  // Ψ̇_k = 0 on the world
                                                         : pairing(r1, d.Psi_dd[k]) + pairing(r2, d.Psi_d[k]);
@@ -188,7 +201,11 @@ private:
         using namespace algorithm_detail;
         derivative_pass<Tree, T> d{uninitialized};
         fill_world_geometry(d, m, q);
-        derivative_forward(d, m.gravity, qd.data(), qdd.data(), f_ext);
+        const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
+        for (std::size_t i = 0; i < Tree::size; ++i) {
+            derivative_velocities(d, i, qd.data(), f_ext);
+            derivative_accelerations(d, i, a_world, qdd.data());
+        }
         rnea_partials<Tree, T> out{{}, tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                    tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                    tree_matrix<Tree, T, sparsity::branches>(uninitialized)};

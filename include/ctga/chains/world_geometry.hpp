@@ -1,7 +1,8 @@
-// What the world-frame algorithms of a tree share (rnea_derivatives.hpp, minverse.hpp): every
-// body's pose in the world, its joint's free directions S moved out into the world frame and its
-// own inertia, computed body by body where the joint types matter (unrolled: an axis joint's S
-// is one blade, moved out at 6m 3a); and the tree's shape as tables, so that the rest of those
+// What the world-frame algorithms of a tree share (rnea_derivatives.hpp, minverse.hpp,
+// aba_derivatives.hpp): every body's pose in the world and its joint's free directions S moved
+// out into the world frame, computed body by body where the joint types matter (unrolled: an
+// axis joint's S is one blade, moved out at 6m 3a), and its own inertia moved into the world
+// (§5: (g ḡ) N (g ḡ)*, the same for every joint: a loop); and the tree's shape as tables, so that the rest of those
 // algorithms, the same for every joint in the world frame, runs as loops over the bodies and
 // compiles once for any tree.
 #pragma once
@@ -25,7 +26,7 @@ namespace algorithm_detail {
 template <class Tree, class T>
 struct world_geometry {
     std::array<motor_map<T>, Tree::size> pose;  // body i in the world
-    std::array<body_inertia<T>, Tree::size> N;  // body i's own inertia, in its frame
+    std::array<body_inertia<T>, Tree::size> N;  // body i's own inertia, world frame
     std::array<screw<T>, Tree::nv> S;           // dof k's free direction, world frame
 
     explicit constexpr world_geometry(uninitialized_t) : S(uninitialized_array<screw<T>, Tree::nv>()) {}
@@ -46,6 +47,7 @@ constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree,
         }(std::make_index_sequence<J::nv>{});
         g.N[i] = L.inertia;
     });
+    for (std::size_t i = 0; i < Tree::size; ++i) g.N[i] = transform(g.pose[i], g.N[i]);
 }
 
 // Lists of dofs by body, flattened: for body b, list[first[b] … first[b + 1]).

@@ -47,4 +47,29 @@ template <std::size_t N, class T>
     return b;
 }
 
+// A⁻¹ from A's factor L (A = L Lᵀ): W = L⁻¹ by forward substitution, the diagonal's reciprocals
+// taken once (N divisions), then A⁻¹ = Wᵀ W, symmetric (the upper triangle formed, mirrored).
+template <std::size_t N, class T>
+[[nodiscard]] constexpr std::array<std::array<T, N>, N> cholesky_inverse(const std::array<std::array<T, N>, N>& L) noexcept {
+    std::array<T, N> r{};
+    for (std::size_t i = 0; i < N; ++i) r[i] = T(1) / L[i][i];
+    std::array<std::array<T, N>, N> W{};
+    for (std::size_t j = 0; j < N; ++j) {
+        W[j][j] = r[j];
+        for (std::size_t i = j + 1; i < N; ++i) {
+            T s = T(0);
+            for (std::size_t k = j; k < i; ++k) s -= L[i][k] * W[k][j];
+            W[i][j] = s * r[i];
+        }
+    }
+    std::array<std::array<T, N>, N> X{};
+    for (std::size_t a = 0; a < N; ++a)
+        for (std::size_t b = a; b < N; ++b) {
+            T s = T(0);
+            for (std::size_t k = b; k < N; ++k) s += W[k][a] * W[k][b];
+            X[a][b] = X[b][a] = s;
+        }
+    return X;
+}
+
 }  // namespace ctga

@@ -3,8 +3,11 @@
 // checked against the formula itself (momentum.formula, evaluated by the engine) on random
 // symmetric N and screws of every sparse type ABA passes (one blade of either orientation, three
 // run-time axis blades, the four blades of a bracket v × S q̇, a full screw), and, for a rigid
-// body's N (articulated_inertia_of), against the momentum of its ten parameters.
+// body's N (articulated_inertia_of), against the momentum of its ten parameters. And the inverse
+// of a floating joint's 6 × 6 D = Sᵀ N S from its Cholesky factor (support/cholesky.hpp).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <random>
 
@@ -82,4 +85,53 @@ TEST_CASE("articulated inertia: a rigid body's N as an articulated inertia has t
         CHECK(rel(momentum(articulated_inertia_of(N), cl031::mv<double, "e3e">{s[5]}), momentum(N, cl031::mv<double, "e3e">{s[5]})) <
               1e-14);
     }
+}
+
+// A floating joint's D⁻¹ (chains/minverse.hpp) is cholesky_inverse of its 6 × 6 D: against the
+// identity (D⁻¹ D = 1, relative to ‖D⁻¹‖ ‖D‖) and against cholesky_solve on the unit vectors, on
+// random positive definite D = B Bᵀ + 0.1 (condition numbers up to about 1e4), and exactly
+// symmetric.
+namespace {
+template <std::size_t N>
+void check_cholesky_inverse(std::mt19937_64& rng) {
+    std::array<std::array<double, N>, N> B{}, D{};
+    for (auto& row : B)
+        for (double& x : row) x = uniform(rng, -1, 1);
+    for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t j = 0; j < N; ++j) {
+            double s = i == j ? 0.1 : 0.0;
+            for (std::size_t k = 0; k < N; ++k) s += B[i][k] * B[j][k];
+            D[i][j] = s;
+        }
+    const auto L = ctga::cholesky(D);
+    REQUIRE(L);
+    const auto X = ctga::cholesky_inverse(*L);
+    double nx = 0, nd = 0, worst_identity = 0, worst_solve = 0;
+    for (std::size_t i = 0; i < N; ++i)
+        for (std::size_t j = 0; j < N; ++j) nx = std::max(nx, std::abs(X[i][j])), nd = std::max(nd, std::abs(D[i][j]));
+    for (std::size_t c = 0; c < N; ++c) {
+        std::array<double, N> e{};
+        e[c] = 1;
+        const auto x = ctga::cholesky_solve(*L, e);
+        for (std::size_t r = 0; r < N; ++r) {
+            double s = 0;
+            for (std::size_t k = 0; k < N; ++k) s += X[r][k] * D[k][c];
+            worst_identity = std::max(worst_identity, std::abs(s - (r == c ? 1.0 : 0.0)) / (N * nx * nd));
+            worst_solve = std::max(worst_solve, std::abs(X[r][c] - x[r]) / nx);
+            CHECK(X[r][c] == X[c][r]);
+        }
+    }
+    CHECK(worst_identity < 1e-15);
+    CHECK(worst_solve < 1e-12);
+}
+}  // namespace
+
+TEST_CASE("cholesky_inverse: D⁻¹ D = 1 and D⁻¹ = cholesky_solve on the unit vectors, for random positive definite D") {
+    std::mt19937_64 rng(28);
+    for (int draw = 0; draw < 200; ++draw) {
+        check_cholesky_inverse<6>(rng);
+        check_cholesky_inverse<3>(rng);
+    }
+    std::array<std::array<double, 2>, 2> indefinite{{{1.0, 2.0}, {2.0, 1.0}}};
+    CHECK(ctga::cholesky(indefinite).error == ctga::error_code::not_positive_definite);
 }

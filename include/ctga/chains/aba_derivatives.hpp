@@ -2,12 +2,13 @@
 // (Carpentier and Mansard, RSS 2018). Forward dynamics solves ID(q, q̇, q̈) = τ, so differentiating
 // the identity ID(q, q̇, FD(q, q̇, τ)) = τ gives
 //   ∂q̈/∂τ = H⁻¹,   ∂q̈/∂q = −H⁻¹ ∂τ/∂q,   ∂q̈/∂q̇ = −H⁻¹ ∂τ/∂q̇
-// with ∂τ/∂(q, q̇) of inverse dynamics (rnea_derivatives.hpp) at q̈ = FD(q, q̇, τ) by ABA (aba.hpp)
-// and H⁻¹ by its own recursion (minverse.hpp). (q̈ = H⁻¹(τ − b), b = ID(q, q̇, 0), is 0.4 µs
-// cheaper on the arm but loses accuracy with H's condition: the 30-body chain's ∂q̈ to 2.1e-11
-// against long-double duals, 6.2e-13 with ABA's q̈.) Configuration derivatives are in the tangent space, as
-// rnea_derivatives'. The products run over the structural entries only: H⁻¹ has the tree's
-// components' pattern, ∂τ its branches', so ∂q̈ has the components' (tree_matrix.hpp).
+// with ∂τ/∂(q, q̇) of inverse dynamics (rnea_derivatives.hpp) at q̈ = FD(q, q̇, τ). All from one
+// world geometry: H⁻¹ by the articulated-body recursion (minverse.hpp), which gives q̈ as well with
+// τ − the bias forces as one more right-hand side (ABA in the world frame: as accurate as aba,
+// where q̈ = H⁻¹(τ − b) lost accuracy with H's condition, the 30-body chain's ∂q̈ 2.1e-11 against
+// long-double duals), then ∂τ from the same velocities. Configuration derivatives are in the
+// tangent space, as rnea_derivatives'. H⁻¹ has the tree's components' pattern, ∂τ its
+// branches', so ∂q̈ has the components' (tree_matrix.hpp).
 #pragma once
 
 #include <array>

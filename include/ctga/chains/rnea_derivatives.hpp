@@ -76,53 +76,49 @@ struct derivative_pass : world_geometry<Tree, T> {
 };
 
 // The rest is the same for every joint, in the world frame: loops over the bodies at run time,
-// compiled once for any tree. Forwards, first what the velocities give: v, the dofs' Ψ̇ and Φ,
-// c = Σ Ψ̇ q̇ = v_λ × v (the acceleration of the joints' motion), and each body's N, Ṅ, h = N v
-// and v ×* h − f_ext (f's velocity terms) as the composites' first terms …
+// compiled once for any tree. Forwards, body i after its parent, first what the velocities give:
+// v, the dofs' Ψ̇ and Φ, c = Σ Ψ̇ q̇ = v_λ × v (the acceleration of the joints' motion), and the
+// body's N, Ṅ, h = N v and v ×* h − f_ext (f's velocity terms) as the composites' first terms …
 template <class Tree, class T>
 constexpr void derivative_velocities(derivative_pass<Tree, T>& d, std::size_t i, const T* qd, const body_wrenches<Tree, T>* f_ext) noexcept {
-    {
-        const int p = Tree::parent[i];
-        const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
-        const screw<T> v_p = p < 0 ? screw<T>{} : d.v[static_cast<std::size_t>(p)];
-        screw<T> v = v_p, c{};
-        for (std::size_t k = o; k < o + nv; ++k) {
-            // the world does not move: Ψ̇ = 0 on it
-            if (p < 0) d.Psi_d[k] = screw<T>{};
-            else d.Psi_d[k] = bracket(v_p, d.S[k]);
-            v = v + d.S[k] * qd[k];
-            c = c + d.Psi_d[k] * qd[k];
-        }
-        // Φ = Ψ̇ + v_j × S: 2Ψ̇ for one dof (v_j × S = v_λ × S), else with the joint's own motion
-        for (std::size_t k = o; k < o + nv; ++k)
-            d.Phi[k] = nv == 1 ? screw<T>(d.Psi_d[k] + d.Psi_d[k]) : screw<T>(d.Psi_d[k] + bracket(v, d.S[k]));
-        d.v[i] = v;
-        d.c[i] = c;
-        const body_inertia<T>& N = d.N[i];
-        d.Nc[i] = N;
-        d.Nc_rate[i] = inertia_rate(N, v);
-        d.Hc[i] = momentum(N, v);
-        d.Fc[i] = coadjoint(v, d.Hc[i]);
-        if (f_ext) d.Fc[i] = d.Fc[i] - transform(d.pose[i], (*f_ext)[i]);
+    const int p = Tree::parent[i];
+    const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
+    const screw<T> v_p = p < 0 ? screw<T>{} : d.v[static_cast<std::size_t>(p)];
+    screw<T> v = v_p, c{};
+    for (std::size_t k = o; k < o + nv; ++k) {
+        // the world does not move: Ψ̇ = 0 on it
+        if (p < 0) d.Psi_d[k] = screw<T>{};
+        else d.Psi_d[k] = bracket(v_p, d.S[k]);
+        v = v + d.S[k] * qd[k];
+        c = c + d.Psi_d[k] * qd[k];
     }
+    // Φ = Ψ̇ + v_j × S: 2Ψ̇ for one dof (v_j × S = v_λ × S), else with the joint's own motion
+    for (std::size_t k = o; k < o + nv; ++k)
+        d.Phi[k] = nv == 1 ? screw<T>(d.Psi_d[k] + d.Psi_d[k]) : screw<T>(d.Psi_d[k] + bracket(v, d.S[k]));
+    d.v[i] = v;
+    d.c[i] = c;
+    const body_inertia<T>& N = d.N[i];
+    d.Nc[i] = N;
+    d.Nc_rate[i] = inertia_rate(N, v);
+    d.Hc[i] = momentum(N, v);
+    d.Fc[i] = coadjoint(v, d.Hc[i]);
+    if (f_ext) d.Fc[i] = d.Fc[i] - transform(d.pose[i], (*f_ext)[i]);
 }
 // … then what the accelerations give: a = a_λ + c + Σ S q̈ (−g at the world), Ψ̈ and f's N a.
 template <class Tree, class T>
 constexpr void derivative_accelerations(derivative_pass<Tree, T>& d, std::size_t i, const screw<T>& a_world, const T* qdd) noexcept {
-    {
-        const int p = Tree::parent[i];
-        const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
-        const screw<T> a_p = p < 0 ? a_world : d.a[static_cast<std::size_t>(p)];
-        screw<T> a = a_p + d.c[i];
-        for (std::size_t k = o; k < o + nv; ++k) {
-            const screw<T>& S = d.S[k];
-            if (p < 0) d.Psi_dd[k] = bracket(a_p, S);  // Ψ̇ = 0
-            else d.Psi_dd[k] = bracket(a_p, S) + bracket(d.v[static_cast<std::size_t>(p)], d.Psi_d[k]);
-            a = a + S * qdd[k];
-        }
-        d.a[i] = a;
-        d.Fc[i] = d.Fc[i] + momentum(d.N[i], a);
+    const int p = Tree::parent[i];
+    const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
+    const screw<T> a_p = p < 0 ? a_world : d.a[static_cast<std::size_t>(p)];
+    screw<T> a = a_p + d.c[i];
+    for (std::size_t k = o; k < o + nv; ++k) {
+        const screw<T>& S = d.S[k];
+        if (p < 0) d.Psi_dd[k] = bracket(a_p, S);  // Ψ̇ = 0
+        else d.Psi_dd[k] = bracket(a_p, S) + bracket(d.v[static_cast<std::size_t>(p)], d.Psi_d[k]);
+        a = a + S * qdd[k];
     }
+    d.a[i] = a;
+    d.Fc[i] = d.Fc[i] + momentum(d.N[i], a);
 }
 
 // Backwards: body j's composites are complete when it is reached (its children, later bodies,

@@ -5,6 +5,7 @@
 //   arm7       7 revolute joints about z, y, z, y, z, y, z, frames 0.3 m apart (a 7-dof arm)
 //   chain30    30 revolute joints cycling z, y, x, frames 0.1 m apart
 //   tree       a floating base with four legs of three revolute joints (hip x, thigh y, knee y)
+//   quadruped  the same shape with a real robot's numbers (Solo 12, feet merged; the derivatives)
 // arm7 has a named frame "tool" on its last body, tree a "foot" at the end of its front left leg
 // (frame_placement: turned and offset, for the frame Jacobians).
 //   chain<N>   N revolute joints cycling z, y, x (the scaling benchmarks, 1 … 64 bodies)
@@ -128,6 +129,49 @@ inline description<13> legged() {
             b.t = j == 0 ? std::array<double, 3>{hip[leg][0], hip[leg][1], 0} : std::array<double, 3>{0, 0, j == 1 ? -0.05 : -0.25};
             random_inertia(rng, b);
         }
+    return d;
+}
+
+// A rigid body fixed to b (a fixed joint merged, as the URDF loader merges fixed links): mass m,
+// centre c and second moments Ic about c, in b's frame; b's centre and Ic move to the sum's
+// (parallel axes: Ic + m (|d|² 1 − d dᵀ), d from the new centre).
+inline void attach(body_description& b, double m, const std::array<double, 3>& c, const std::array<std::array<double, 3>, 3>& Ic) {
+    const double M = b.mass + m;
+    std::array<double, 3> com{};
+    for (std::size_t i = 0; i < 3; ++i) com[i] = (b.mass * b.com[i] + m * c[i]) / M;
+    const auto shifted = [&](double mass, const std::array<double, 3>& at, const std::array<std::array<double, 3>, 3>& I) {
+        const std::array<double, 3> d{at[0] - com[0], at[1] - com[1], at[2] - com[2]};
+        const double dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+        std::array<std::array<double, 3>, 3> out = I;
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j) out[i][j] += mass * ((i == j ? dd : 0.0) - d[i] * d[j]);
+        return out;
+    };
+    const auto a = shifted(b.mass, b.com, b.Ic), e = shifted(m, c, Ic);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) b.Ic[i][j] = a[i][j] + e[i][j];
+    b.mass = M;
+    b.com = com;
+}
+
+// A real quadruped, merged: Solo 12 (solo12.urdf of a public collection of robot descriptions,
+// BSD 3-Clause, Copyright (C) 2018-2020 LAAS-CNRS, University of Edinburgh, INRIA), the legged
+// tree's shape with the URDF's numbers: joint origins (no rotations), axes x, y, y, and each
+// link's inertial, the feet (fixed joints at (0, ±0.008, −0.16)) merged into the lower legs.
+inline description<13> solo12() {
+    description<13> d{};
+    d[0] = {-1, sp::joint_kind::floating, {0, 0, 0}, 1.16115091, {0, 0, 0}, {{{0.00578574, 0, 0}, {0, 0.01938108, 0}, {0, 0, 0.02476124}}}};
+    for (int leg = 0; leg < 4; ++leg) {
+        const double x = leg < 2 ? 1.0 : -1.0, y = leg % 2 == 0 ? 1.0 : -1.0;  // FL, FR, HL, HR
+        const std::size_t b = static_cast<std::size_t>(1 + 3 * leg);
+        d[b] = {0, sp::joint_kind::revolute_x, {0.1946 * x, 0.0875 * y, 0}, 0.14853845, {-0.078707 * x, 0.01 * y, 0},
+                {{{0.00003024, 0.00004671 * y, 0}, {0.00004671 * y, 0.00041193, 0}, {0, 0, 0.00041107}}}};
+        d[b + 1] = {static_cast<int>(b), sp::joint_kind::revolute_y, {0, 0.014 * y, 0}, 0.14853845, {0.00001377 * y, 0.01935853 * y, -0.078707},
+                    {{{0.00041107, 0, 0}, {0, 0.00041193, 0.00004671 * y}, {0, 0.00004671 * y, 0.00003024}}}};
+        d[b + 2] = {static_cast<int>(b + 1), sp::joint_kind::revolute_y, {0, 0.03745 * y, -0.16}, 0.03070001, {0, 0.00787644 * y, -0.08928215},
+                    {{{0.00012024, 0, 0}, {0, 0.00012029, 0.00000305 * y}, {0, 0.00000305 * y, 0.00000216}}}};
+        attach(d[b + 2], 0.00693606, {0, 0.008 * y, -0.16 + 0.00035767}, {{{0.00000057, 0, 0}, {0, 0.00000084, 0}, {0, 0, 0.00000053}}});
+    }
     return d;
 }
 

@@ -21,6 +21,7 @@
 
 #include "support/catch.hpp"
 #include "support/dual.hpp"
+#include "support/dual_partials.hpp"
 #include "support/featherstone_derivatives.hpp"
 #include "support/model_cast.hpp"
 #include "support/parts.hpp"
@@ -34,48 +35,15 @@ using ctga::test::make_draw;
 using ctga::test::random_structure;
 namespace fs = ctga::test::featherstone;
 
-constexpr std::size_t chunk = 6;  // partials per dual evaluation
-using D = ctga_test::dual<chunk>;
-
+using D = ctga::test::chunk_dual;
 template <class Tree>
 using dense = std::array<std::array<double, Tree::nv>, Tree::nv>;
 
 // The partials of y = algorithm(q, q̇, x) (rnea: x = q̈; aba: x = τ) by duals, with respect to q
-// (tangent space), q̇ and x, columns [c0, c0 + chunk) at a time.
+// (tangent space), q̇ and x (support/dual_partials.hpp).
 template <class Tree, class Algorithm>
 std::array<dense<Tree>, 3> dual_partials(const draw<Tree>& d, const ch::joint_vector<Tree>& x0, Algorithm algorithm) {
-    const ch::model<Tree, D> md = ctga_test::model_cast<D>(d.m);
-    std::array<dense<Tree>, 3> out{};
-    for (std::size_t wrt = 0; wrt < 3; ++wrt)
-        for (std::size_t c0 = 0; c0 < Tree::nv; c0 += chunk) {
-            // the seed of dof k: partial k − c0 when in this chunk
-            const auto seed = [&](std::size_t k, double value) { return k >= c0 && k < c0 + chunk ? D::variable(value, k - c0) : D(value); };
-            ch::configuration<Tree, D> q{};
-            ch::joint_vector<Tree, D> qd{}, x{};
-            for (std::size_t k = 0; k < Tree::nq; ++k) q[k] = D(d.q[k]);
-            for (std::size_t k = 0; k < Tree::nv; ++k) {
-                qd[k] = wrt == 1 ? seed(k, d.qd[k]) : D(d.qd[k]);
-                x[k] = wrt == 2 ? seed(k, x0[k]) : D(x0[k]);
-            }
-            if (wrt == 0)
-                for (std::size_t b = 0; b < Tree::size; ++b) {
-                    const std::size_t qo = Tree::q_offset[b], vo = Tree::v_offset[b];
-                    const auto delta = [&](std::size_t k) { return seed(k, 0.0); };
-                    if (Tree::nq_of[b] == 1) q[qo] = q[qo] + delta(vo);
-                    if (Tree::nq_of[b] == 8) {  // g (1 + ½(ω, v)): the motor moved in its own frame
-                        const ctga::motor<D> g{q[qo], q[qo + 1], q[qo + 2], q[qo + 3], q[qo + 4], q[qo + 5], q[qo + 6], q[qo + 7]};
-                        const ctga::motor<D> e{D(1.0),           delta(vo) * 0.5,     delta(vo + 1) * 0.5, delta(vo + 2) * 0.5,
-                                               D(0.0),           delta(vo + 3) * 0.5, delta(vo + 4) * 0.5, delta(vo + 5) * 0.5};
-                        const ctga::motor<D> ge = g * e;
-                        for (std::size_t k = 0; k < 8; ++k) q[qo + k] = ge[k];
-                    }
-                }
-            const auto y = algorithm(md, q, qd, x);
-            for (std::size_t i = 0; i < Tree::nv; ++i)
-                for (std::size_t c = c0; c < std::min(c0 + chunk, Tree::nv); ++c)
-                    out[wrt][i][c] = ctga_test::derivative(y[i], c - c0);
-        }
-    return out;
+    return ctga::test::dual_partials(d.m, d.q, d.qd, x0, algorithm);
 }
 
 template <class Tree, class M>

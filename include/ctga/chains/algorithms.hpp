@@ -11,6 +11,7 @@
 //   energy.hpp              tree_kinetic_energy, tree_potential_energy
 //   frames.hpp              frame_pose, frame_velocity, frame_acceleration, frame_classical_acceleration
 //   frame_jacobian.hpp      frame_jacobian, frame_jacobian_time_variation: J and J̇ of a frame
+//   frame_derivatives.hpp   frame_motion_derivatives: ∂ of a frame's velocity and acceleration
 //   center_of_mass.hpp      center_of_mass, subtree_centers_of_mass, center_of_mass_jacobian
 //   centroidal.hpp          centroidal_momentum, centroidal_momentum_matrix   (Orin & Goswami 2008)
 //   floating_base.hpp       a floating base's pose and velocity to and from ROS's / Pinocchio's numbers
@@ -28,6 +29,7 @@
 #include "ctga/chains/energy.hpp"
 #include "ctga/chains/forward_kinematics.hpp"
 #include "ctga/chains/floating_base.hpp"
+#include "ctga/chains/frame_derivatives.hpp"
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/frames.hpp"
 #include "ctga/chains/minverse.hpp"

@@ -1,5 +1,5 @@
 // A tree's model with another scalar type (dual numbers for derivatives): every parameter
-// converted, U(x). Mimic joints are not converted (no test needs them).
+// converted, U(x), a mimic joint's coupling included.
 #pragma once
 
 #include <cstddef>
@@ -33,7 +33,6 @@ ctga::chains::model<Tree, U> model_cast(const ctga::chains::model<Tree, T>& m) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         ([&] {
             using J = typename Tree::template joint_at<I>;
-            static_assert(!ch::is_mimic<J>, "model_cast: mimic joints are not converted");
             const auto& a = m.template link<I>();
             auto& b = out.template link<I>();
             b.placement = cast_map<U>(a.placement);
@@ -41,7 +40,13 @@ ctga::chains::model<Tree, U> model_cast(const ctga::chains::model<Tree, T>& m) {
             const auto& N = a.inertia;
             b.inertia = {s{U(N.m[0])},   s{U(N.hx[0])},  s{U(N.hy[0])},  s{U(N.hz[0])},  s{U(N.ixx[0])},
                          s{U(N.iyy[0])}, s{U(N.izz[0])}, s{U(N.ixy[0])}, s{U(N.ixz[0])}, s{U(N.iyz[0])}};
-            if constexpr (ch::has_run_time_axis<J>) b.joint.u = cast_array<U>(a.joint.u);
+            if constexpr (ch::is_mimic<J>) {
+                b.joint.multiplier = U(a.joint.multiplier);
+                b.joint.offset = U(a.joint.offset);
+                if constexpr (ch::has_run_time_axis<J>) b.joint.joint.u = cast_array<U>(a.joint.joint.u);
+            } else if constexpr (ch::has_run_time_axis<J>) {
+                b.joint.u = cast_array<U>(a.joint.u);
+            }
         }(), ...);
     }(std::make_index_sequence<Tree::size>{});
     return out;

@@ -9,12 +9,14 @@
 // long-double duals), then ∂τ from the same velocities. Configuration derivatives are in the
 // tangent space, as rnea_derivatives'. H⁻¹ has the tree's components' pattern, ∂τ its
 // branches', so ∂q̈ has the components' (tree_matrix.hpp).
+// With mimic joints: q̈ by aba, ∂τ and H by rnea_derivatives, H⁻¹ from H's Cholesky factor.
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <utility>
 
+#include "ctga/chains/aba.hpp"
 #include "ctga/chains/minverse.hpp"
 #include "ctga/chains/rnea_derivatives.hpp"
 #include "ctga/chains/tree_matrix.hpp"
@@ -87,23 +89,31 @@ private:
     static constexpr aba_partials<Tree, T> run(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
                                                const body_wrenches<Tree, T>* f_ext) noexcept {
-        static_assert(!Tree::has_mimic, "ctga::chains::aba_derivatives: trees with mimic joints are not supported yet");
         using namespace algorithm_detail;
         using C = tree_matrix<Tree, T, sparsity::components>;
-        derivative_pass<Tree, T> d{uninitialized};
-        fill_world_geometry(d, m, q);
-        for (std::size_t i = 0; i < Tree::size; ++i) derivative_velocities(d, i, qd.data(), f_ext);
-        aba_partials<Tree, T> out{{}, C(uninitialized), C(uninitialized), C(uninitialized)};
-        const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
-        articulated_bias<Tree, T> bias{tau.data(), d.Fc, d.c, a_world,
-                                       out.qdd.data(), {}, uninitialized_array<screw<T>, Tree::size>()};
-        articulated_recursion(d, out.Minv, bias);
-        for (std::size_t i = 0; i < Tree::size; ++i) derivative_accelerations(d, i, a_world, out.qdd.data());
-        inverse_partials<Tree, T> id;
-        derivative_backward(d, id);
-        out.dqdd_dq = minus_product(out.Minv, id.dtau_dq);
-        out.dqdd_dv = minus_product(out.Minv, id.dtau_dv);
-        return out;
+        if constexpr (Tree::has_mimic) {
+            // the articulated-body recursion does not hold with couplings: q̈ by aba (a Cholesky
+            // solve), ∂τ and H by rnea_derivatives (reduced), H⁻¹ from H's Cholesky factor
+            const joint_vector<Tree, T> qdd = f_ext ? chains::aba(m, q, qd, tau, *f_ext) : chains::aba(m, q, qd, tau);
+            const rnea_partials<Tree, T> id = f_ext ? rnea_derivatives(m, q, qd, qdd, *f_ext) : rnea_derivatives(m, q, qd, qdd);
+            const C Minv = inverse_of<Tree>(id.M.dense());
+            return {qdd, minus_product(Minv, id.dtau_dq), minus_product(Minv, id.dtau_dv), Minv};
+        } else {
+            derivative_pass<Tree, T> d{uninitialized};
+            fill_world_geometry(d, m, q);
+            for (std::size_t i = 0; i < Tree::size; ++i) derivative_velocities(d, i, qd.data(), f_ext);
+            aba_partials<Tree, T> out{{}, C(uninitialized), C(uninitialized), C(uninitialized)};
+            const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
+            articulated_bias<Tree, T> bias{tau.data(), d.Fc, d.c, a_world,
+                                           out.qdd.data(), {}, uninitialized_array<screw<T>, Tree::size>()};
+            articulated_recursion(d, out.Minv, bias);
+            for (std::size_t i = 0; i < Tree::size; ++i) derivative_accelerations(d, i, a_world, out.qdd.data());
+            inverse_partials<Tree, T> id;
+            derivative_backward(d, id);
+            out.dqdd_dq = minus_product(out.Minv, id.dtau_dq);
+            out.dqdd_dv = minus_product(out.Minv, id.dtau_dv);
+            return out;
+        }
     }
 };
 // The derivatives of q̈ = aba(m, q, q̇, τ[, f_ext]) with q̈ itself: aba_partials.

@@ -22,6 +22,7 @@
 
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/frames.hpp"
+#include "ctga/chains/mimic_expansion.hpp"
 #include "ctga/chains/rnea_derivatives.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/world_geometry.hpp"
@@ -43,11 +44,14 @@ struct frame_motion_derivatives_t {
     [[nodiscard]] constexpr frame_motion_partials<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                                       const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd,
                                                                       F f, reference r) const noexcept {
-        static_assert(!Tree::has_mimic, "ctga::chains::frame_motion_derivatives: trees with mimic joints are not supported yet");
         using namespace algorithm_detail;
         constexpr int b = frame_detail::frame_on<Tree, F>::body;
         frame_motion_partials<Tree, T> out{};
-        if constexpr (b >= 0) {
+        if constexpr (Tree::has_mimic) {  // on the expanded tree, J_all G (mimic_expansion.hpp)
+            const expansion<Tree, T> x(m);
+            const auto all = (*this)(x.m, x.configuration_of(q), x.velocities_of(qd), x.velocities_of(qdd), f, r);
+            return {x.reduce(all.dv_dq), x.reduce(all.dv_dv), x.reduce(all.da_dq), x.reduce(all.da_dv), x.reduce(all.da_da)};
+        } else if constexpr (b >= 0) {
             derivative_pass<Tree, T> d{uninitialized};
             fill_world_geometry(d, m, q);
             const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};

@@ -14,6 +14,8 @@
 // for the columns j from body i's own on (H⁻¹ is symmetric: the rest is mirrored). A column of
 // another component of the tree (another body on the world) is a structural zero (tree_matrix.hpp,
 // sparsity::components) and is never touched.
+// With mimic joints the recursion does not hold (a coupling ties two bodies' motions): H⁻¹
+// comes from CRBA's H by its Cholesky factor (inverse_of), as aba.hpp solves such trees.
 #pragma once
 
 #include <array>
@@ -22,6 +24,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/chains/crba.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/tree_matrix.hpp"
 #include "ctga/chains/world_geometry.hpp"
@@ -240,20 +243,34 @@ constexpr void articulated_recursion(const world_geometry<Tree, T>& g, tree_matr
             if (Minv.pattern[r][c]) Minv(r, c) = Minv(c, r);
 }
 
+// H⁻¹ from H (dense) by its Cholesky factor, in the components' pattern: for a tree with mimic
+// joints, where the articulated-body recursion does not hold (aba.hpp solves by Cholesky too).
+template <class Tree, class T>
+constexpr tree_matrix<Tree, T, sparsity::components> inverse_of(const std::array<std::array<T, Tree::nv>, Tree::nv>& H) noexcept {
+    const std::array<std::array<T, Tree::nv>, Tree::nv> X = joint_inverse(H);
+    tree_matrix<Tree, T, sparsity::components> out(uninitialized);
+    for (std::size_t i = 0; i < Tree::nv; ++i)
+        for (std::size_t j = 0; j < Tree::nv; ++j)
+            if (out.pattern[i][j]) out(i, j) = X[i][j];
+    return out;
+}
+
 }  // namespace algorithm_detail
 
 struct minverse_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr tree_matrix<Tree, T, sparsity::components> operator()(const model<Tree, T>& m,
                                                                                  const configuration<Tree, T>& q) const noexcept {
-        static_assert(!Tree::has_mimic, "ctga::chains::minverse: trees with mimic joints are not supported yet");
         using namespace algorithm_detail;
-        tree_matrix<Tree, T, sparsity::components> Minv(uninitialized);
-        world_geometry<Tree, T> g{uninitialized};
-        fill_world_geometry(g, m, q);
-        no_bias none;
-        articulated_recursion(g, Minv, none);
-        return Minv;
+        if constexpr (Tree::has_mimic) return inverse_of<Tree>(crba(m, q));  // (inverse_of: why)
+        else {
+            tree_matrix<Tree, T, sparsity::components> Minv(uninitialized);
+            world_geometry<Tree, T> g{uninitialized};
+            fill_world_geometry(g, m, q);
+            no_bias none;
+            articulated_recursion(g, Minv, none);
+            return Minv;
+        }
     }
 };
 // H⁻¹(q), the inverse of crba(m, q), with its components' pattern (tree_matrix.hpp).

@@ -30,12 +30,15 @@
 // screws and co-screws, and only entries of the tree's pattern (tree_matrix.hpp: joints on one
 // branch) are formed; per body the work is a fixed number of screw operations, plus one pairing
 // per pair of joints on a branch.
+// A tree with mimic joints is differentiated on its expanded tree and reduced by G
+// (mimic_expansion.hpp).
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <utility>
 
+#include "ctga/chains/mimic_expansion.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/tree_matrix.hpp"
@@ -193,20 +196,25 @@ private:
     static constexpr rnea_partials<Tree, T> run(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                 const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& qdd,
                                                 const body_wrenches<Tree, T>* f_ext) noexcept {
-        static_assert(!Tree::has_mimic, "ctga::chains::rnea_derivatives: trees with mimic joints are not supported yet");
         using namespace algorithm_detail;
-        derivative_pass<Tree, T> d{uninitialized};
-        fill_world_geometry(d, m, q);
-        const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
-        for (std::size_t i = 0; i < Tree::size; ++i) {
-            derivative_velocities(d, i, qd.data(), f_ext);
-            derivative_accelerations(d, i, a_world, qdd.data());
+        if constexpr (Tree::has_mimic) {  // on the expanded tree, reduced by G (mimic_expansion.hpp)
+            const expansion<Tree, T> x(m);
+            const auto all = run(x.m, x.configuration_of(q), x.velocities_of(qd), x.velocities_of(qdd), f_ext);
+            return {x.reduce(all.tau), x.reduce(all.dtau_dq), x.reduce(all.dtau_dv), x.reduce(all.M)};
+        } else {
+            derivative_pass<Tree, T> d{uninitialized};
+            fill_world_geometry(d, m, q);
+            const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
+            for (std::size_t i = 0; i < Tree::size; ++i) {
+                derivative_velocities(d, i, qd.data(), f_ext);
+                derivative_accelerations(d, i, a_world, qdd.data());
+            }
+            rnea_partials<Tree, T> out{{}, tree_matrix<Tree, T, sparsity::branches>(uninitialized),
+                                       tree_matrix<Tree, T, sparsity::branches>(uninitialized),
+                                       tree_matrix<Tree, T, sparsity::branches>(uninitialized)};
+            derivative_backward(d, out);
+            return out;
         }
-        rnea_partials<Tree, T> out{{}, tree_matrix<Tree, T, sparsity::branches>(uninitialized),
-                                   tree_matrix<Tree, T, sparsity::branches>(uninitialized),
-                                   tree_matrix<Tree, T, sparsity::branches>(uninitialized)};
-        derivative_backward(d, out);
-        return out;
     }
 };
 // The derivatives of τ = rnea(m, q, q̇, q̈[, f_ext]) with τ itself: rnea_partials.

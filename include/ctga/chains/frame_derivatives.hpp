@@ -1,9 +1,10 @@
 // The derivatives of a frame's velocity and spatial acceleration (frames.hpp) with respect to q,
-// q̇ and q̈, from the world-frame forward passes of rnea_derivatives.hpp (Carpentier and Mansard's
-// frame derivatives). Configuration derivatives are in the tangent space, as rnea_derivatives':
-// moving dof k moves everything its body carries rigidly by the world screw S_k. For a dof k on
-// the path from the frame's body b to the root (every other column is zero), with b's world
-// velocity v and acceleration a, Ψ̇_k = v_λ × S_k, Ψ̈_k and Φ_k as in rnea_derivatives.hpp:
+// q̇ and q̈, from the world-frame forward passes of rnea_derivatives.hpp, their kinematics only
+// (Carpentier and Mansard's frame derivatives). Configuration derivatives are in the tangent
+// space, as rnea_derivatives': moving dof k moves everything its body carries rigidly by the
+// world screw S_k. For a dof k on the path from the frame's body b to the root (every other
+// column is zero), with b's world velocity v and acceleration a, Ψ̇_k = v_λ × S_k, Ψ̈_k and Φ_k
+// as in rnea_derivatives.hpp:
 //
 //   world:  ∂v/∂q_k = S_k × v + Ψ̇_k,          ∂v/∂q̇_k = S_k,
 //           ∂a/∂q_k = S_k × a + Ψ̈_k + Ψ̇_k × v, ∂a/∂q̇_k = S_k × v + Φ_k,   ∂a/∂q̈_k = S_k
@@ -56,8 +57,8 @@ struct frame_motion_derivatives_t {
             fill_world_geometry(d, m, q);
             const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
             for (std::size_t i = 0; i <= static_cast<std::size_t>(b); ++i) {
-                derivative_velocities(d, i, qd.data(), static_cast<const body_wrenches<Tree, T>*>(nullptr));
-                derivative_accelerations(d, i, a_world, qdd.data());
+                derivative_velocities<false>(d, i, qd.data(), static_cast<const body_wrenches<Tree, T>*>(nullptr));
+                derivative_accelerations<false>(d, i, a_world, qdd.data());
             }
             const screw<T>& v = d.v[b];
             const screw<T>& a = d.a[b];

@@ -82,7 +82,8 @@ struct derivative_pass : world_geometry<Tree, T> {
 // compiled once for any tree. Forwards, body i after its parent, first what the velocities give:
 // v, the dofs' Ψ̇ and Φ, c = Σ Ψ̇ q̇ = v_λ × v (the acceleration of the joints' motion), and the
 // body's N, Ṅ, h = N v and v ×* h − f_ext (f's velocity terms) as the composites' first terms …
-template <class Tree, class T>
+// (Inertial = false: the kinematics only, for a frame's derivatives, frame_derivatives.hpp.)
+template <bool Inertial = true, class Tree, class T>
 constexpr void derivative_velocities(derivative_pass<Tree, T>& d, std::size_t i, const T* qd, const body_wrenches<Tree, T>* f_ext) noexcept {
     const int p = Tree::parent[i];
     const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
@@ -100,15 +101,17 @@ constexpr void derivative_velocities(derivative_pass<Tree, T>& d, std::size_t i,
         d.Phi[k] = nv == 1 ? screw<T>(d.Psi_d[k] + d.Psi_d[k]) : screw<T>(d.Psi_d[k] + bracket(v, d.S[k]));
     d.v[i] = v;
     d.c[i] = c;
-    const body_inertia<T>& N = d.N[i];
-    d.Nc[i] = N;
-    d.Nc_rate[i] = inertia_rate(N, v);
-    d.Hc[i] = momentum(N, v);
-    d.Fc[i] = coadjoint(v, d.Hc[i]);
-    if (f_ext) d.Fc[i] = d.Fc[i] - transform(d.pose[i], (*f_ext)[i]);
+    if constexpr (Inertial) {
+        const body_inertia<T>& N = d.N[i];
+        d.Nc[i] = N;
+        d.Nc_rate[i] = inertia_rate(N, v);
+        d.Hc[i] = momentum(N, v);
+        d.Fc[i] = coadjoint(v, d.Hc[i]);
+        if (f_ext) d.Fc[i] = d.Fc[i] - transform(d.pose[i], (*f_ext)[i]);
+    }
 }
 // … then what the accelerations give: a = a_λ + c + Σ S q̈ (−g at the world), Ψ̈ and f's N a.
-template <class Tree, class T>
+template <bool Inertial = true, class Tree, class T>
 constexpr void derivative_accelerations(derivative_pass<Tree, T>& d, std::size_t i, const screw<T>& a_world, const T* qdd) noexcept {
     const int p = Tree::parent[i];
     const std::size_t o = Tree::v_offset[i], nv = Tree::nv_of[i];
@@ -121,7 +124,7 @@ constexpr void derivative_accelerations(derivative_pass<Tree, T>& d, std::size_t
         a = a + S * qdd[k];
     }
     d.a[i] = a;
-    d.Fc[i] = d.Fc[i] + momentum(d.N[i], a);
+    if constexpr (Inertial) d.Fc[i] = d.Fc[i] + momentum(d.N[i], a);
 }
 
 // Backwards: body j's composites are complete when it is reached (its children, later bodies,

@@ -108,7 +108,7 @@ template <std::size_t K, class Tree, class T, class Bias>
 constexpr void minverse_backward_step(std::size_t j, const world_geometry<Tree, T>& g, articulated_pass<Tree, T>& P,
                                       tree_matrix<Tree, T, sparsity::components>& Minv, Bias& bias) noexcept {
     using tables = branch_tables<Tree>;
-    auto& NA = P.NA;  // (references, not a structured binding: clang 15's lambdas cannot capture one)
+    auto& NA = P.NA;  // (references, not a structured binding: clang 14's lambdas cannot capture one)
     auto& U = P.U;
     auto& UD = P.UD;
     auto& F = P.F;

@@ -82,8 +82,11 @@ void compare(std::uint64_t seed, int draws) {
             // inverse dynamics, with and without external wrenches
             CHECK(rel_error(ch::rnea(d.m, d.q, d.qd, d.qdd), fs::rnea(d.ref, d.q_ref, d.qd_ref, d.qdd_ref)) < 1e-12);
             CHECK(rel_error(ch::rnea(d.m, d.q, d.qd, d.qdd, f), fs::rnea(d.ref, d.q_ref, d.qd_ref, d.qdd_ref, f_ref)) < 1e-12);
-            // the mass matrix
-            CHECK(rel_error(ch::crba(d.m, d.q), fs::crba(d.ref, d.q_ref)) < 1e-12);
+            // the mass matrix, in both of CRBA's forms (crba.hpp; ch::crba takes the cheaper)
+            const Eigen::MatrixXd H_ref = fs::crba(d.ref, d.q_ref);
+            CHECK(rel_error(ch::crba(d.m, d.q), H_ref) < 1e-12);
+            CHECK(rel_error(ch::algorithm_detail::crba_local(d.m, d.q), H_ref) < 1e-12);
+            CHECK(rel_error(ch::algorithm_detail::crba_world(d.m, d.q), H_ref) < 1e-12);
             // energies
             const double ke = fs::kinetic_energy(d.ref, d.q_ref, d.qd_ref), pe = fs::potential_energy(d.ref, d.q_ref);
             CHECK(std::abs(ch::tree_kinetic_energy(d.m, d.q, d.qd) - ke) <= 1e-12 * std::max(1.0, std::abs(ke)));

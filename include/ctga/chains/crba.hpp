@@ -1,10 +1,20 @@
 // The joint-space mass matrix H(q) of a kinematic tree: the composite rigid body algorithm
-// (Featherstone (2008) §6.2), with each body's N by its ten parameters (body_inertia).
+// (Featherstone (2008) §6.2), with each body's N by its ten parameters (body_inertia). H(j, k) =
+// F_k(S_j), F_k = N^c S_k the force of column k (dof k of body i, N^c_i the composite of body i
+// and everything it carries), for every dof j of i and of its ancestors. Two formulations of
+// these sums, the cheaper one for the tree's shape taken at compile time (crba_cost):
 //
-// N^c_i = N_i + Σ_children X_c N^c_c (the composite of body i and everything it carries, moved
-// into i's frame: transform(X, body_inertia), 54m 50a). Column (i, k) of H: F = N^c_i S_ik, then
-// H(j, l) = F(S_jl) for body i's own dofs and, moving F out through X_i, X_λ(i), …, each ancestor j.
-// With mimic joints (joints.hpp) the same entries are summed into H = Gᵀ H_all G.
+// - in each body's frame (local): N^c_i = N_i + Σ_children X_c N^c_c (transform(X, body_inertia),
+//   54m 50a); F = N^c_i S_ik, then H(j, l) = F(S_jl) for body i's own dofs and, moving F out
+//   through X_i, X_λ(i), … (24m 18a each), each ancestor j. An axis joint's S is one blade, so
+//   N S and F(S) cost almost nothing; the transforms, one per (dof, ancestor body), dominate.
+//   Unrolled body by body. With mimic joints the entries are summed into H = Gᵀ H_all G.
+// - in the world frame (world): with every body's S and N moved out once (world_geometry.hpp),
+//   the composites are sums (10a per body) and each entry one pairing of world co-screw and
+//   screw (6m 5a), so an entry costs no transform: cheaper for deep trees, whose (dof, ancestor)
+//   pairs outnumber the bodies (a 30-body chain: 435 transforms against 30 world placements).
+//   Loops over the bodies and the ancestors' dofs (tables), so its code does not grow with the
+//   pairs. (Trees with mimic joints take the local form.)
 #pragma once
 
 #include <array>
@@ -12,7 +22,9 @@
 #include <utility>
 
 #include "ctga/chains/passes.hpp"
+#include "ctga/chains/runs.hpp"
 #include "ctga/chains/tree.hpp"
+#include "ctga/chains/world_geometry.hpp"
 #include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/inertia_transform.hpp"
@@ -87,32 +99,78 @@ CTGA_ALWAYS_INLINE constexpr void crba_column(const model<Tree, T>& m, const std
         fill_ancestors<I>(m, X, H, col, F);
     }
 }
+// The local form (the header's first).
+template <class Tree, class T>
+constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+    std::array<motor_map<T>, Tree::size> X;
+    forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
+    std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<body_inertia<T>, Tree::size>{m.template link<I>().inertia...};
+    }(std::make_index_sequence<Tree::size>{});
+    backward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        constexpr int p = Tree::parent[i];
+        if constexpr (p >= 0) Nc[p] = Nc[p] + transform(X[i], Nc[i]);
+    });
+    joint_matrix<Tree, T> H{};
+    forward<Tree::size>([&](auto body) {
+        constexpr std::size_t i = decltype(body)::value;
+        using J = typename Tree::template joint_at<i>;
+        if constexpr (moves<J>)
+            [&]<std::size_t... K>(std::index_sequence<K...>) {
+                (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
+            }(std::make_index_sequence<is_mimic<J> ? 1 : J::nv>{});
+    });
+    return H;
+}
+
+// The world form (the header's second).
+template <class Tree, class T>
+constexpr joint_matrix<Tree, T> crba_world(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+    world_geometry<Tree, T> g{uninitialized};
+    fill_world_geometry(g, m, q);
+    for (std::size_t i = Tree::size; i-- > 0;)  // the composites: children come after their parent
+        if (Tree::parent[i] >= 0) g.N[static_cast<std::size_t>(Tree::parent[i])] = g.N[static_cast<std::size_t>(Tree::parent[i])] + g.N[i];
+    using ancestors = branch_tables<Tree>;
+    joint_matrix<Tree, T> H{};
+    for (std::size_t i = 0; i < Tree::size; ++i)
+        for (std::size_t k = Tree::v_offset[i]; k < Tree::v_offset[i + 1]; ++k) {
+            const coscrew<T> F = momentum(g.N[i], g.S[k]);
+            for (std::size_t c = ancestors::supporting.first[i]; c < ancestors::supporting.first[i + 1]; ++c) {
+                const std::size_t j = ancestors::supporting.list[c];
+                H[j][k] = H[k][j] = pairing(F, g.S[j]);
+            }
+            for (std::size_t j = Tree::v_offset[i]; j <= k; ++j) H[j][k] = H[k][j] = pairing(F, g.S[j]);
+        }
+    return H;
+}
+
+// The flops of each form for Tree's shape (axis joints' S one blade; the counts of the header):
+// local 104 per body and 42 per (dof, ancestor body); world 222 per body (placement 66,
+// inertia 104, composite 10, N S 42) and 11 per (dof, ancestor's or own dof) entry.
+template <class Tree>
+struct crba_cost {
+    static constexpr std::size_t local = [] {
+        std::size_t c = 104 * Tree::size;
+        for (std::size_t k = 0; k < Tree::nv; ++k)
+            for (int b = Tree::parent[Tree::body_of_dof[k]]; b >= 0; b = Tree::parent[static_cast<std::size_t>(b)]) c += 42;
+        return c;
+    }();
+    static constexpr std::size_t world = [] {
+        std::size_t c = 222 * Tree::size;
+        for (std::size_t k = 0; k < Tree::nv; ++k)
+            for (std::size_t j = 0; j <= k; ++j) c += Tree::supports(Tree::body_of_dof[j], Tree::body_of_dof[k]) ? 11 : 0;
+        return c;
+    }();
+    static constexpr bool in_world = !Tree::has_mimic && world < local;
+};
 }  // namespace algorithm_detail
 
 struct crba_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr joint_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q) const noexcept {
-        using namespace algorithm_detail;
-        std::array<motor_map<T>, Tree::size> X;
-        forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
-        std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
-            return std::array<body_inertia<T>, Tree::size>{m.template link<I>().inertia...};
-        }(std::make_index_sequence<Tree::size>{});
-        backward<Tree::size>([&](auto body) {
-            constexpr std::size_t i = decltype(body)::value;
-            constexpr int p = Tree::parent[i];
-            if constexpr (p >= 0) Nc[p] = Nc[p] + transform(X[i], Nc[i]);
-        });
-        joint_matrix<Tree, T> H{};
-        forward<Tree::size>([&](auto body) {
-            constexpr std::size_t i = decltype(body)::value;
-            using J = typename Tree::template joint_at<i>;
-            if constexpr (moves<J>)
-                [&]<std::size_t... K>(std::index_sequence<K...>) {
-                    (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
-                }(std::make_index_sequence<is_mimic<J> ? 1 : J::nv>{});
-        });
-        return H;
+        if constexpr (algorithm_detail::crba_cost<Tree>::in_world) return algorithm_detail::crba_world(m, q);
+        else return algorithm_detail::crba_local(m, q);
     }
 };
 inline constexpr crba_t crba{};

@@ -59,16 +59,18 @@ inline constexpr fixed_string translation_blade = index_of(A) == 0 ? fixed_strin
 
 // placement ∘ (rotation by angle q about coordinate axis k): R' = R Rₖ(q), t' = t. With
 // (a, b) = (k + 1, k + 2) mod 3, Rₖ(q) turns column a of R towards column b:
-// col_a' = c col_a + s col_b, col_b' = −s col_a + c col_b (12m 6a).
+// col_a' = c col_a + s col_b, col_b' = −s col_a + c col_b (12m 6a). Every entry is written once,
+// in one initialiser: a copy of P overwritten in part leaves pairs of entries half written that
+// the next read of the pair must wait for (a store-forwarding stall; measured: the 7-dof arm's
+// seven maps 165 → 99 ns, the legged tree's thirteen 333 → 195 ns).
 template <int K, class T>
 CTGA_ALWAYS_INLINE constexpr motor_map<T> rotate_about_axis(const motor_map<T>& P, const T& c, const T& s) noexcept {
     constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
-    motor_map<T> G = P;
-    for (int r = 0; r < 3; ++r) {
-        G.R[r][a] = c * P.R[r][a] + s * P.R[r][b];
-        G.R[r][b] = c * P.R[r][b] - s * P.R[r][a];
-    }
-    return G;
+    const auto entry = [&](int r, int j) CTGA_INLINE_LAMBDA -> T {
+        return j == a ? c * P.R[r][a] + s * P.R[r][b] : j == b ? c * P.R[r][b] - s * P.R[r][a] : P.R[r][j];
+    };
+    return {{{{entry(0, 0), entry(0, 1), entry(0, 2)}, {entry(1, 0), entry(1, 1), entry(1, 2)}, {entry(2, 0), entry(2, 1), entry(2, 2)}}},
+            P.t};
 }
 
 // R u for the parameters' unit axis (column combination), and R·R_u(q) by Rodrigues' formula
@@ -161,12 +163,8 @@ struct prismatic : joint_detail::one_blade<joint_detail::translation_blade<A>, j
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
         constexpr int k = joint_detail::index_of(A);
-        motor_map<T> G = placement;
-        if constexpr (joint_detail::sign_of(A) > 0)
-            for (int r = 0; r < 3; ++r) G.t[r] = placement.t[r] + q[0] * placement.R[r][k];
-        else
-            for (int r = 0; r < 3; ++r) G.t[r] = placement.t[r] - q[0] * placement.R[r][k];
-        return G;
+        const T d = joint_detail::sign_of(A) > 0 ? q[0] : -q[0];
+        return {placement.R, {placement.t[0] + d * placement.R[0][k], placement.t[1] + d * placement.R[1][k], placement.t[2] + d * placement.R[2][k]}};
     }
 };
 

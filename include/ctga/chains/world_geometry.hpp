@@ -13,6 +13,7 @@
 
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/passes.hpp"
+#include "ctga/chains/runs.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/motor.hpp"
@@ -34,19 +35,19 @@ struct world_geometry {
 
 template <class Tree, class T>
 constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        using J = typename Tree::template joint_at<i>;
-        const auto& L = m.template link<i>();
-        const motor_map<T> X = joint_map<i>(m, q);
-        if constexpr (p < 0) g.pose[i] = X;
-        else g.pose[i] = compose(g.pose[p], X);
-        [&]<std::size_t... K>(std::index_sequence<K...>) {
-            ((g.S[Tree::v_offset[i] + K] = frame_detail::moved_out(g.pose[i], J::template subspace<K, T>(L.joint))), ...);
+    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
+        using B = std::remove_cvref_t<decltype(b)>;
+        using J = typename B::joint;
+        const std::size_t i = b.i;
+        const auto& L = b.link(m);
+        const motor_map<T> X = J::motion(L.placement, L.joint, q.data() + b.q_src);
+        if constexpr (B::root) g.pose[i] = X;
+        else g.pose[i] = compose(g.pose[b.p], X);
+        [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
+            ((g.S[b.v_own + K] = frame_detail::moved_out(g.pose[i], J::template subspace<K, T>(L.joint))), ...);
         }(std::make_index_sequence<J::nv>{});
-        g.N[i] = L.inertia;
     });
+    [&]<std::size_t... I>(std::index_sequence<I...>) { ((g.N[I] = m.template link<I>().inertia), ...); }(std::make_index_sequence<Tree::size>{});
     for (std::size_t i = 0; i < Tree::size; ++i) g.N[i] = transform(g.pose[i], g.N[i]);
 }
 

@@ -5,7 +5,9 @@
 //   arm7       7 revolute joints about z, y, z, y, z, y, z, frames 0.3 m apart (a 7-dof arm)
 //   chain30    30 revolute joints cycling z, y, x, frames 0.1 m apart
 //   tree       a floating base with four legs of three revolute joints (hip x, thigh y, knee y)
-//   quadruped  the same shape with a real robot's numbers (Solo 12, feet merged; the derivatives)
+//   quadruped  the same shape with a real robot's numbers (Solo 12, feet merged)
+//   humanoid   a floating pelvis, two legs of six joints, torso, head, two arms of seven and
+//              hands: 39 bodies, 44 dofs
 // arm7 has a named frame "tool" on its last body, tree a "foot" at the end of its front left leg
 // (frame_placement: turned and offset, for the frame Jacobians).
 //   chain<N>   N revolute joints cycling z, y, x (the scaling benchmarks, 1 … 64 bodies)
@@ -23,6 +25,7 @@
 
 #include <ctga/ctga.hpp>
 
+#include "chain_trees.hpp"
 #include "spatial_chains.hpp"
 
 namespace bench::chains {
@@ -82,38 +85,15 @@ description<N> serial(const std::array<sp::joint_kind, 3>& cycle, std::size_t cy
 
 // ---- the benchmarked trees -----------------------------------------------------------------------
 
-using arm7_tree = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_y>, ch::link<1, ch::revolute_z>,
-                           ch::link<2, ch::revolute_y>, ch::link<3, ch::revolute_z>, ch::link<4, ch::revolute_y>,
-                           ch::link<5, ch::revolute_z>, ch::fixed_frame<"tool", 6>>;
 inline description<7> arm7() {
     return serial<7>({sp::joint_kind::revolute_z, sp::joint_kind::revolute_y, sp::joint_kind::revolute_z}, 2, 0.3, 7);
 }
 
-// chain<N>: joint i about z, y, x, z, …
-template <std::size_t I>
-using cycling_joint = std::conditional_t<I % 3 == 0, ch::revolute_z, std::conditional_t<I % 3 == 1, ch::revolute_y, ch::revolute_x>>;
-template <class Seq>
-struct serial_tree;
-template <std::size_t... I>
-struct serial_tree<std::index_sequence<I...>> {
-    using type = ch::tree<ch::link<static_cast<int>(I) - 1, cycling_joint<I>>...>;
-};
-template <std::size_t N>
-using chain_tree = typename serial_tree<std::make_index_sequence<N>>::type;
 template <std::size_t N>
 description<N> chain() {
     return serial<N>({sp::joint_kind::revolute_z, sp::joint_kind::revolute_y, sp::joint_kind::revolute_x}, 3, 0.1, 30 + N);
 }
-using chain30_tree = chain_tree<30>;
 
-// A trunk on a floating joint and four legs, each hip (x), thigh (y), knee (y).
-using legged_tree =
-    ch::tree<ch::link<-1, ch::floating>,                                                                   //
-             ch::link<0, ch::revolute_x>, ch::link<1, ch::revolute_y>, ch::link<2, ch::revolute_y>,      // front left
-             ch::link<0, ch::revolute_x>, ch::link<4, ch::revolute_y>, ch::link<5, ch::revolute_y>,      // front right
-             ch::link<0, ch::revolute_x>, ch::link<7, ch::revolute_y>, ch::link<8, ch::revolute_y>,      // hind left
-             ch::link<0, ch::revolute_x>, ch::link<10, ch::revolute_y>, ch::link<11, ch::revolute_y>,   // hind right
-             ch::fixed_frame<"foot", 3>>;                                                           // front left foot
 inline description<13> legged() {
     std::mt19937_64 rng(13);
     description<13> d{};
@@ -129,6 +109,47 @@ inline description<13> legged() {
             b.t = j == 0 ? std::array<double, 3>{hip[leg][0], hip[leg][1], 0} : std::array<double, 3>{0, 0, j == 1 ? -0.05 : -0.25};
             random_inertia(rng, b);
         }
+    return d;
+}
+
+inline description<39> humanoid() {
+    using k = sp::joint_kind;
+    std::mt19937_64 rng(39);
+    description<39> d{};
+    const auto put = [&](std::size_t i, int parent, k kind, std::array<double, 3> t) {
+        d[i].parent = parent;
+        d[i].kind = kind;
+        d[i].t = t;
+        random_inertia(rng, d[i]);
+    };
+    put(0, -1, k::floating, {0, 0, 0});
+    d[0].mass = 8;
+    for (int side = 0; side < 2; ++side) {
+        const double y = side == 0 ? 1 : -1;
+        const std::size_t leg = side == 0 ? 1 : 7, arm = side == 0 ? 17 : 28, hand = arm + 7;
+        const int l = static_cast<int>(leg), a = static_cast<int>(arm);
+        put(leg, 0, k::revolute_z, {0, 0.1 * y, -0.1});
+        put(leg + 1, l, k::revolute_x, {0, 0, -0.05});
+        put(leg + 2, l + 1, k::revolute_y, {0, 0, -0.05});
+        put(leg + 3, l + 2, k::revolute_y, {0, 0, -0.4});
+        put(leg + 4, l + 3, k::revolute_y, {0, 0, -0.4});
+        put(leg + 5, l + 4, k::revolute_x, {0, 0, -0.05});
+        put(arm, 14, k::revolute_y, {0, 0.2 * y, 0.25});
+        put(arm + 1, a, k::revolute_x, {0, 0.05 * y, 0});
+        put(arm + 2, a + 1, k::revolute_z, {0, 0, -0.1});
+        put(arm + 3, a + 2, k::revolute_y, {0, 0, -0.2});
+        put(arm + 4, a + 3, k::revolute_z, {0, 0, -0.1});
+        put(arm + 5, a + 4, k::revolute_y, {0, 0, -0.15});
+        put(arm + 6, a + 5, k::revolute_x, {0, 0, -0.05});
+        put(hand, a + 6, k::revolute_z, {0.02, 0.02 * y, -0.05});
+        put(hand + 1, static_cast<int>(hand), k::revolute_y, {0, 0, -0.03});
+        put(hand + 2, a + 6, k::revolute_y, {-0.02, 0, -0.08});
+        put(hand + 3, static_cast<int>(hand) + 2, k::revolute_y, {0, 0, -0.04});
+    }
+    put(13, 0, k::revolute_z, {0, 0, 0.1});
+    put(14, 13, k::revolute_y, {0, 0, 0.1});
+    put(15, 14, k::revolute_z, {0, 0, 0.35});
+    put(16, 15, k::revolute_y, {0, 0, 0.05});
     return d;
 }
 

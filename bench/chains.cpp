@@ -2,6 +2,8 @@
 // in hand-written spatial code (bench/spatial_chains.hpp), as Google Benchmarks named
 // <algorithm>_<tree>/<implementation>: rnea_arm7/ctga, rnea_arm7/spatial, aba_chain30/…, fk_tree/…
 // (trees in bench/chain_models.hpp; kernels in chains_kernels.hpp, one translation unit per tree).
+// With MuJoCo found by CMake (CTGA_BENCH_MUJOCO), rnea, crba and aba also as <algorithm>_<tree>/mujoco
+// (chains_mujoco.cpp: the same trees in MuJoCo 2.2.2, checked against ctga before they are timed).
 // With CTGA_CHAINS_SCALING it is ctga_chains_scaling_* instead: rnea_chain/<N>/<implementation>,
 // aba_chain/<N>/…, crba_chain/<N>/… for the N listed (chains_scaling.cpp).
 //
@@ -22,6 +24,7 @@ int main(int argc, char** argv) {
     add_chain30(table);
     add_chain30_crba_fk(table);
     add_legged(table);
+    add_humanoid(table);
     add_derivatives_arm7(table);
     add_derivatives_chain30(table);
     add_derivatives_legged(table);

@@ -1,9 +1,10 @@
 // Kinematic trees (include/ctga/chains/) against an independent reference: Featherstone's
 // algorithms on 6D spatial vectors with 3×3 rotations and Eigen (support/featherstone.hpp,
 // written without ctga). The trees' structures are types: each is drawn at compile time from a
-// seed (random_structure below), 1 to 30 bodies mixing every joint type, some on a floating base;
+// seed (random_structure below), 1 to 30 bodies mixing every joint type, some on a floating base,
+// and the benchmarks' 39-body humanoid with joint kinds drawn at random (random_kinds);
 // their parameters and states are drawn at run time, the same numbers given to both.
-// PARTS: 8
+// PARTS: 10
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -21,6 +22,7 @@
 #include "support/random_floating_base.hpp"
 #include "support/random_tree.hpp"
 #include "support/random_structure.hpp"
+#include "../bench/chain_trees.hpp"  // the benchmarks' humanoid: its shape
 
 namespace {
 
@@ -106,7 +108,7 @@ void compare(std::uint64_t seed, int draws) {
 }  // namespace
 
 // Part 0: small trees; 1, 2 and 7: twelve bodies (7: the repeated legs); 3 to 6: thirty bodies,
-// each tree's checks in two units (each unit within the compile budget: as one unit the file took
+// 8 and 9: the humanoid, each tree's checks in two units (each unit within the compile budget: as one unit the file took
 // 46 s and 1.6 GB with g++).
 #define CHAINS_CASE(part, name) TEST_CASE("chains: FK, RNEA, ABA, CRBA, Jacobians and energies agree with Featherstone's reference, " name)
 #if CTGA_TEST_PART_HOLDS(0)
@@ -159,6 +161,18 @@ CHAINS_CASE(3, "30 bodies: FK, RNEA, CRBA, energies") {
 CHAINS_CASE(4, "30 bodies: ABA, Jacobians") {
     compare<random_structure<7, 30, false>::type, checks::forward_dynamics_and_jacobians>(17, 5);
 }
+#endif
+#if CTGA_TEST_PART_HOLDS(8) || CTGA_TEST_PART_HOLDS(9)
+// The humanoid's shape (39 bodies on a floating base) with every joint but the base's drawn:
+// a tree visited by kind (runs.hpp), CRBA in body frames.
+using random_humanoid = ctga::test::random_kinds<31, bench::chains::humanoid_tree>::type;
+static_assert(ch::run_detail::plan<random_humanoid>::at(0).by_kind, "the humanoid is visited by kind");
+#endif
+#if CTGA_TEST_PART_HOLDS(8)
+CHAINS_CASE(8, "a humanoid: FK, RNEA, CRBA, energies") { compare<random_humanoid, checks::kinematics_and_inverse_dynamics>(21, 3); }
+#endif
+#if CTGA_TEST_PART_HOLDS(9)
+CHAINS_CASE(9, "a humanoid: ABA, Jacobians") { compare<random_humanoid, checks::forward_dynamics_and_jacobians>(21, 3); }
 #endif
 #if CTGA_TEST_PART_HOLDS(5)
 CHAINS_CASE(5, "30 bodies on a floating base: FK, RNEA, CRBA, energies") {

@@ -13,7 +13,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 export BUILD_DIR=${BUILD_DIR:-$root/build}
 
-bash tools/deps.sh valgrind python3-matplotlib
+bash tools/deps.sh valgrind python3-matplotlib libmujoco-dev
 bash tools/configure.sh
 cmake --build "$BUILD_DIR" --target ctga_bench -j"$(nproc)"
 out=$BUILD_DIR/bench
@@ -36,16 +36,20 @@ for op in "${operations[@]}"; do
 done
 
 # kinematic trees: ctga_chains_bench, its instructions, and the scaling executables (1–64 bodies)
-cmake --build "$BUILD_DIR" --target ctga_chains_bench ctga_chains_scaling_small ctga_chains_scaling_32 \
+cmake --build "$BUILD_DIR" --target ctga_chains_bench ctga_chains_flops ctga_chains_scaling_small ctga_chains_scaling_32 \
     ctga_chains_scaling_64 -j"$(nproc)"
+"$out/ctga_chains_flops" >"$out/chains_flops.tsv"  # operation counts and the scalar peak (render_benchmarks.py)
 "$out/ctga_chains_bench" --benchmark_repetitions=7 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true --benchmark_min_time=0.2 \
     --benchmark_out="$out/chains.json" --benchmark_out_format=json
 : >"$out/chains_instructions.txt"
-for tree in arm7 chain30 tree; do
-    algorithms=(rnea aba crba fk)
-    [[ $tree == chain30 ]] || algorithms+=(jacobian)  # the trees with a named frame
+for tree in arm7 chain30 tree quadruped humanoid; do
+    algorithms=(rnea aba crba)
+    [[ $tree == quadruped ]] || algorithms+=(fk)
+    [[ $tree == arm7 || $tree == tree ]] && algorithms+=(jacobian)  # the trees with a Jacobian row
     for a in "${algorithms[@]}"; do
-        for impl in ctga spatial; do
+        impls=(ctga spatial)
+        grep -q "\"${a}_$tree/mujoco\"" "$out/chains.json" && impls+=(mujoco)  # (built with MuJoCo)
+        for impl in "${impls[@]}"; do
             total=$(valgrind --tool=callgrind --callgrind-out-file=/dev/null --toggle-collect='*chain_kernel*' \
                 "$out/ctga_chains_bench" --repeat "${a}_$tree/$impl" "$calls" 2>&1 | awk '/Collected/ {print $4}')
             echo "${a}_$tree $impl $((total / calls))" >>"$out/chains_instructions.txt"

@@ -12,6 +12,10 @@
 #   (b6) bench/compile/arm7_derivatives.cpp  the arm's rnea_derivatives and aba_derivatives (with
 #                                     minverse), at -O2
 #   (c) the heaviest test unit         only with --with-heaviest (about 30 s)
+#   (e) bench/compile/tree_dynamics.cpp  one tree's RNEA, ABA and CRBA at -O2 against its number of
+#                                     bodies: serial chains of 8, 16, 32 and 64 bodies, the 39-body
+#                                     humanoid, and the arm (arm7_dynamics.cpp); a plot of seconds
+#                                     against bodies (docs/img/compile_trees.svg)
 #   (d) bench/compile/generators.cpp   one algebra of n generators and one geometric product of
 #                                     two general vectors, bivectors, even elements and general
 #                                     multivectors, n = 3..10 (past the loop threshold: looped)
@@ -141,6 +145,20 @@ if ((with_heaviest)); then
     measure_unit "(c) heaviest" "$heaviest" "${cdb_dirs[0]}" "$hcmd"
 fi
 
+# ---- (e) trees against their bodies ------------------------------------------------------
+echo "compile-cost: a tree's RNEA + ABA + CRBA against its bodies, -O2" >&2
+ttsv=$out/compile_trees.tsv
+printf 'tree\tbodies\tdofs\twall\tcpu\trss\tstatus\tload\n' > "$ttsv"
+tree_unit() { # LABEL BODIES DOFS FILE FLAGS
+    printf '  %-12s … ' "$1" >&2
+    measure "$ref_dir" "$(measure_cmd "$root/$4" "$5")"
+    printf '%ss %sMB %s\n' "$m_wall" "$m_rss" "$m_status" >&2
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$1" "$2" "$3" "$m_wall" "$m_cpu" "$m_rss" "$m_status" "$m_load" >> "$ttsv"
+}
+tree_unit "arm7" 7 7 bench/compile/arm7_dynamics.cpp "-O2"
+for n in 8 16 32 64; do tree_unit "chain $n" "$n" "$n" bench/compile/tree_dynamics.cpp "-O2 -DCTGA_BODIES=$n"; done
+tree_unit "humanoid" 39 44 bench/compile/tree_dynamics.cpp "-O2 -DCTGA_HUMANOID"
+
 # ---- (d) n generators --------------------------------------------------------------------
 kinds=(vectors bivectors even general)
 echo "compile-cost: one product against the number of generators" >&2
@@ -198,6 +216,19 @@ std_flags=$(grep -oE -- '-(O[0-9s]|std=[^ ]+|DNDEBUG)' <<<"$flags" | paste -sd' 
         echo "| $label | \`$file\` | $wall | $cpu | $rss | $l |"
     done
     ((with_heaviest)) || echo "| (c) heaviest | not measured (run with \`--with-heaviest\`) | | | | |"
+    echo
+    echo "(e) One unit with a tree's RNEA, ABA and CRBA at -O2 (\`bench/compile/tree_dynamics.cpp\`;"
+    echo "the arm: \`arm7_dynamics.cpp\`): chains of revolute joints cycling z, y, x and the humanoid of"
+    echo "\`bench/chain_trees.hpp\`. Targets (issue 29): the arm ≤ 7 s, the 64-body chain ≤ 20 s, the"
+    echo "humanoid ≤ 15 s and ≤ 1.5 GB."
+    echo
+    echo "| tree | bodies | dofs | wall s | cpu s | peak MB | load |"
+    echo "| --- | ---: | ---: | ---: | ---: | ---: | ---: |"
+    tail -n +2 "$ttsv" | while IFS=$'\t' read -r tree bodies dofs wall cpu rss status l; do
+        [[ $status == ok ]] || wall="$wall ($status)"
+        echo "| $tree | $bodies | $dofs | $wall | $cpu | $rss | $l |"
+    done
+    [[ -z $plot ]] || printf '\n![compile seconds against bodies](img/compile_trees.svg)\n'
     echo
     echo "One algebra of n generators e1 … en (squares −1, the last 0) and one geometric product of two"
     echo "general operands, evaluated at run time (\`bench/compile/generators.cpp\`, \`-DCTGA_N=n\`)."
@@ -291,6 +322,32 @@ EOF
         echo "compile-cost: neither /usr/bin/python3 with matplotlib nor gnuplot: no plot" >&2
         plot=
     fi
+fi
+
+# the trees' plot: compile seconds against bodies
+if [[ -n $plot ]] && /usr/bin/python3 -c 'import matplotlib' 2>/dev/null; then
+    /usr/bin/python3 - "$ttsv" "$(dirname "$plot")/compile_trees.svg" "$cxx_version" <<'EOF'
+import csv, sys
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+tsv, out, cxx = sys.argv[1:4]
+rows = [r for r in csv.DictReader(open(tsv), delimiter="\t") if r["status"] == "ok"]
+fig, ax = plt.subplots(figsize=(6, 4))
+chains = [r for r in rows if r["tree"].startswith("chain")]
+ax.plot([int(r["bodies"]) for r in chains], [float(r["wall"]) for r in chains], "o-", label="serial chain")
+for r in rows:
+    if not r["tree"].startswith("chain"):
+        ax.plot([int(r["bodies"])], [float(r["wall"])], "s", label=r["tree"] + " (" + r["dofs"] + " dofs)")
+ax.set_xlabel("bodies")
+ax.set_ylabel("compile wall time, s (-O2)")
+ax.set_ylim(bottom=0)
+ax.grid(True, alpha=0.3)
+ax.legend(fontsize=8)
+ax.set_title("one unit with RNEA + ABA + CRBA (" + cxx + ")", fontsize=9)
+fig.tight_layout()
+fig.savefig(out, format="svg")
+EOF
 fi
 
 echo "compile-cost: $md${plot:+, $plot} ($(($(date +%s) - start)) s)" >&2

@@ -3,7 +3,8 @@
 #   bash tools/deps.sh                 (tools/demo.sh and tools/test.sh call it; clang is for
 #                                      tools/test.sh's second build tree, Debian 12's clang 14;
 #                                      python3 runs tools/urdf_to_ctga.py for the tests)
-#   bash tools/deps.sh extra-pkg ...   the same, plus these (tools/bench.sh: valgrind, matplotlib)
+#   bash tools/deps.sh extra-pkg ...   the same, plus these (tools/bench.sh: valgrind, matplotlib,
+#                                      libmujoco-dev for ctga_chains_bench's MuJoCo rows)
 # CTGA_SKIP_DEPS=1 skips the check (e.g. on non-Debian systems).
 set -euo pipefail
 

@@ -1,5 +1,6 @@
 // Random kinematic trees drawn at compile time from a seed (their structure is a type: 1 to 30
-// bodies mixing every joint type, some on a floating base), and one draw of parameters and state
+// bodies mixing every joint type, some on a floating base; or a given shape with random joint
+// kinds), and one draw of parameters and state
 // given both to ctga and to the Featherstone reference (support/featherstone.hpp).
 #pragma once
 
@@ -71,6 +72,22 @@ struct random_structure {
     }();
     template <std::size_t... I>
     static auto make(std::index_sequence<I...>) -> ch::tree<ch::link<value.parent[I], joint_of<value.kind[I]>>...>;
+    using type = decltype(make(std::make_index_sequence<N>{}));
+};
+
+// A tree of the given shape (parents, body 0 on a floating joint) with the other joint kinds
+// drawn from the seed: the benchmarks' humanoid (bench/chain_trees.hpp) as a random tree.
+template <std::uint64_t Seed, class Shape>
+struct random_kinds {
+    static constexpr std::size_t N = Shape::size;
+    static constexpr std::array<int, N> kind = [] {
+        std::array<int, N> k{};
+        std::uint64_t state = Seed;
+        for (std::size_t i = 0; i < N; ++i) k[i] = i == 0 ? 9 : static_cast<int>((splitmix(state) >> 32) % 9);
+        return k;
+    }();
+    template <std::size_t... I>
+    static auto make(std::index_sequence<I...>) -> ch::tree<ch::link<Shape::parent[I], joint_of<kind[I]>>...>;
     using type = decltype(make(std::make_index_sequence<N>{}));
 };
 

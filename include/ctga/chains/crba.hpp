@@ -38,87 +38,98 @@ template <class Tree, class T = double>
 using joint_matrix = std::array<std::array<T, Tree::nv>, Tree::nv>;  // H, row-major
 
 namespace algorithm_detail {
-// The weight of body J's joint in G (joints.hpp): a mimic's multiplier, 1 for any other joint.
-template <std::size_t J, class Tree, class T>
-CTGA_ALWAYS_INLINE constexpr T dof_weight(const model<Tree, T>& m) noexcept {
-    if constexpr (is_mimic<typename Tree::template joint_at<J>>) return m.template link<J>().joint.multiplier;
+// The weight of body b's joint in G (joints.hpp): a mimic's multiplier, 1 for any other joint.
+template <class B, class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr T dof_weight(const B& b, const model<Tree, T>& m) noexcept {
+    if constexpr (is_mimic<typename B::joint>) return b.link(m).joint.multiplier;
     else return T(1);
 }
-// H(j, c) = F(S_j) for body j's dofs, F from column c. In a tree with mimic joints the entries of
-// H_all are added into H = Gᵀ H_all G with their weights: an ancestor's entry both ways round (H_all
-// is symmetric and only its lower part is computed), the column's own body's (Own) once, since
-// its columns give its whole block.
+// H(j, c) = F(S_j) for body b's dofs j, F from column c. In a tree with mimic joints the entries
+// of H_all are added into H = Gᵀ H_all G with their weights: an ancestor's entry both ways round
+// (H_all is symmetric and only its lower part is computed), the column's own body's (Own) once,
+// since its columns give its whole block.
 // (The weight is passed in a tree with mimic joints only: the others' code has no trace of it.)
-template <std::size_t J, bool Own, class Tree, class T, class... Weight>
-CTGA_ALWAYS_INLINE constexpr void fill_rows(const model<Tree, T>& m, joint_matrix<Tree, T>& H, std::size_t col,
+template <bool Own, class B, class Tree, class T, class... Weight>
+CTGA_ALWAYS_INLINE constexpr void fill_rows(const B& b, const model<Tree, T>& m, joint_matrix<Tree, T>& H, std::size_t col,
                                             const coscrew<T>& F, const Weight&... w_col) noexcept {
-    using Jt = typename Tree::template joint_at<J>;
+    using Jt = typename B::joint;
     constexpr std::size_t n = is_mimic<Jt> ? 1 : Jt::nv;
+    const auto& L = b.link(m);
     if constexpr (!Tree::has_mimic) {
-        [&]<std::size_t... L>(std::index_sequence<L...>) {
-            ((H[Tree::v_offset[J] + L][col] = H[col][Tree::v_offset[J] + L] =
-                  pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
-             ...);
+        [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
+            ((H[b.v_own + K][col] = H[col][b.v_own + K] = pairing(F, Jt::template subspace<K, T>(L.joint))), ...);
         }(std::make_index_sequence<n>{});
     } else {
-        const T w = (w_col * ...) * dof_weight<J>(m);
+        const T w = (w_col * ...) * dof_weight(b, m);
         const auto add = [&](std::size_t row, const T& x) {
             H[row][col] += x;
             if constexpr (!Own) H[col][row] += x;
         };
-        [&]<std::size_t... L>(std::index_sequence<L...>) {
-            (add(Tree::v_offset[Tree::reads_from[J]] + L, w * pairing(F, Jt::template subspace<L, T>(m.template link<J>().joint))),
-             ...);
+        [&]<std::size_t... K>(std::index_sequence<K...>) {
+            (add(b.v_src + K, w * pairing(F, Jt::template subspace<K, T>(L.joint))), ...);
         }(std::make_index_sequence<n>{});
     }
 }
-// F moved out of body `Child` into its parent's frame, and the parent's entries filled; then on up.
-template <std::size_t Child, class Tree, class T, class... Weight>
-CTGA_ALWAYS_INLINE constexpr void fill_ancestors(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
-                                                 joint_matrix<Tree, T>& H, std::size_t col, const coscrew<T>& F,
-                                                 const Weight&... w_col) noexcept {
-    constexpr int p = Tree::parent[Child];
-    if constexpr (p >= 0) {
-        const coscrew<T> Fp = transform(X[Child], F);
-        if constexpr (moves<typename Tree::template joint_at<static_cast<std::size_t>(p)>>)
-            fill_rows<static_cast<std::size_t>(p), false>(m, H, col, Fp, w_col...);
-        fill_ancestors<static_cast<std::size_t>(p)>(m, X, H, col, Fp, w_col...);
-    }
-}
-// Column K of body I's dofs, from F = N^c_I S_IK.
-template <std::size_t I, std::size_t K, class Tree, class T>
-CTGA_ALWAYS_INLINE constexpr void crba_column(const model<Tree, T>& m, const std::array<motor_map<T>, Tree::size>& X,
-                                              joint_matrix<Tree, T>& H, const coscrew<T>& F) noexcept {
-    const std::size_t col = Tree::v_offset[Tree::reads_from[I]] + K;
-    if constexpr (Tree::has_mimic) {
-        const T w = dof_weight<I>(m);
-        fill_rows<I, true>(m, H, col, F, w);
-        fill_ancestors<I>(m, X, H, col, F, w);
+// F moved out of body b into its parent's frame, and the parent's entries filled; then on up:
+// for a body of compile-time index by recursion (unrolled), else by a loop over the ancestors,
+// each visited as its kind (runs.hpp).
+template <class B, class Tree, class T, class Links, class... Weight>
+CTGA_ALWAYS_INLINE constexpr void fill_ancestors(const B& b, const model<Tree, T>& m, const Links& links,
+                                                 const std::array<motor_map<T>, Tree::size>& X, joint_matrix<Tree, T>& H,
+                                                 std::size_t col, const coscrew<T>& F, const Weight&... w_col) noexcept {
+    const auto fill = [&](const auto& a, const coscrew<T>& Fa) CTGA_INLINE_LAMBDA {
+        if constexpr (moves<typename std::remove_cvref_t<decltype(a)>::joint>) fill_rows<false>(a, m, H, col, Fa, w_col...);
+    };
+    if constexpr (B::constant) {
+        if constexpr (!B::root) {
+            using parent = run_detail::single_body<Tree, B::p>;
+            const coscrew<T> Fp = transform(X[B::i], F);
+            fill(parent{}, Fp);
+            fill_ancestors(parent{}, m, links, X, H, col, Fp, w_col...);
+        }
     } else {
-        fill_rows<I, false>(m, H, col, F);  // (Own matters to the mimic sums only)
-        fill_ancestors<I>(m, X, H, col, F);
+        coscrew<T> Fa = F;
+        for (std::size_t a = b.i; Tree::parent[a] >= 0;) {
+            Fa = transform(X[a], Fa);
+            a = static_cast<std::size_t>(Tree::parent[a]);
+            visit_body(m, links, a, [&](const auto& ancestor) CTGA_INLINE_LAMBDA { fill(ancestor, Fa); });
+        }
     }
 }
+
 // The local form (the header's first).
 template <class Tree, class T>
 constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
     std::array<motor_map<T>, Tree::size> X;
-    forward<Tree::size>([&](auto body) { X[decltype(body)::value] = joint_map<decltype(body)::value>(m, q); });
+    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
+        using J = typename std::remove_cvref_t<decltype(b)>::joint;
+        const auto& L = b.link(m);
+        X[b.i] = J::motion(L.placement, L.joint, q.data() + b.q_src);
+    });
     std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
         return std::array<body_inertia<T>, Tree::size>{m.template link<I>().inertia...};
     }(std::make_index_sequence<Tree::size>{});
-    backward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        constexpr int p = Tree::parent[i];
-        if constexpr (p >= 0) Nc[p] = Nc[p] + transform(X[i], Nc[i]);
+    each_body_backward(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
+        if constexpr (!std::remove_cvref_t<decltype(b)>::root) Nc[b.p] = Nc[b.p] + transform(X[b.i], Nc[b.i]);
     });
+    const auto links = body_links(m);
     joint_matrix<Tree, T> H{};
-    forward<Tree::size>([&](auto body) {
-        constexpr std::size_t i = decltype(body)::value;
-        using J = typename Tree::template joint_at<i>;
+    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
+        using J = typename std::remove_cvref_t<decltype(b)>::joint;
         if constexpr (moves<J>)
-            [&]<std::size_t... K>(std::index_sequence<K...>) {
-                (crba_column<i, K>(m, X, H, momentum(Nc[i], J::template subspace<K, T>(m.template link<i>().joint))), ...);
+            [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
+                ([&] {  // column K of body b's dofs, from F = N^c_b S_bK
+                    const coscrew<T> F = momentum(Nc[b.i], J::template subspace<K, T>(b.link(m).joint));
+                    const std::size_t col = b.v_src + K;
+                    if constexpr (Tree::has_mimic) {
+                        const T w = dof_weight(b, m);
+                        fill_rows<true>(b, m, H, col, F, w);
+                        fill_ancestors(b, m, links, X, H, col, F, w);
+                    } else {
+                        fill_rows<false>(b, m, H, col, F);  // (Own matters to the mimic sums only)
+                        fill_ancestors(b, m, links, X, H, col, F);
+                    }
+                }(), ...);
             }(std::make_index_sequence<is_mimic<J> ? 1 : J::nv>{});
     });
     return H;

@@ -112,6 +112,21 @@ using coupled_arm = ch::tree<ch::link<-1, ch::revolute_z>,                    //
                              ch::fixed_frame<"belt", 7>>;
 constexpr ch::coupling<double> arm_coupling{0.7, -0.1};
 
+// Two arms on a floating base, each a parallel gripper whose right finger follows its left one,
+// and a mast: 20 bodies, more steps than runs make small, so the passes visit them by kind
+// (runs.hpp), mimic joints among them.
+using two_grippers = ch::tree<ch::link<-1, ch::floating>,                                               //  0 base
+                              ch::link<0, ch::revolute_z>, ch::link<1, ch::revolute<ch::axis::minus_y>>,  //  1 left arm
+                              ch::link<2, ch::revolute_x>, ch::link<3, ch::revolute_y>, ch::link<4, ch::revolute_about>,
+                              ch::link<5, ch::prismatic_x>, ch::link<5, ch::mimic<ch::prismatic_x, 6>>,  //  6, 7 fingers
+                              ch::link<0, ch::fixed>,                                                   //  8 torso
+                              ch::link<8, ch::revolute_z>, ch::link<9, ch::revolute<ch::axis::minus_y>>,  //  9 right arm
+                              ch::link<10, ch::revolute_x>, ch::link<11, ch::revolute_y>, ch::link<12, ch::revolute_about>,
+                              ch::link<13, ch::prismatic_x>, ch::link<13, ch::mimic<ch::prismatic_x, 14>>,  // 14, 15 fingers
+                              ch::link<0, ch::prismatic<ch::axis::minus_z>>, ch::link<16, ch::revolute_z>,  // 16 mast
+                              ch::link<17, ch::revolute_y>, ch::link<18, ch::revolute_x>>;
+static_assert(ch::run_detail::plan<two_grippers>::at(0).by_kind, "two_grippers is visited by kind");
+
 // Joints about −x, −y and along −z without mimic joints: forward dynamics by the articulated-body
 // pass (the trees above, with their mimic joints, solve it by Cholesky).
 using minus_axes = ch::tree<ch::link<-1, ch::revolute<ch::axis::minus_x>>,
@@ -491,7 +506,8 @@ void check_mass_distribution(const draw<Tree>& d, worst& w) {
 
 // Part 0: the gripper's frames; part 1: the arm (frames, dynamics, centre of mass, centroidal
 // momentum) and massless subtrees; part 2: the gripper's dynamics, centre of mass and centroidal
-// momentum, the floating base's layout, the tree without mimic joints, refused inputs. (As one
+// momentum, two grippers visited by kind, the floating base's layout, the tree without mimic
+// joints, refused inputs. (As one
 // unit the file took ~45 s and 2 GB with g++ -O2: each frame of each tree instantiates its own
 // Jacobians and J̇, each tree its own dynamics. Each part takes ~22-25 s and ~1.2 GB.)
 #if CTGA_TEST_PART_HOLDS(0)
@@ -588,6 +604,20 @@ TEST_CASE("frames: the gripper's dynamics, centre of mass and centroidal momentu
             const draw<mobile_gripper> d = make_draw<mobile_gripper>(rng, finger_coupling);
             check_dynamics(d, w);
             check_mass_distribution(d, w);
+        }
+    }
+}
+
+TEST_CASE("frames: two grippers with mimic fingers on a floating base, visited by kind: dynamics agree with the reference",
+          "[frames][mimic]") {
+    worst w("two_grippers dynamics (by kind, two mimic joints)");
+    for (const std::uint64_t seed : {281u, 282u}) {
+        std::mt19937_64 rng(seed);
+        for (int n = 0; n < 3; ++n) {
+            INFO("seed " << seed << ", draw " << n);
+            const draw<two_grippers> d = make_draw<two_grippers>(rng, finger_coupling);
+            REQUIRE(d.couplings.size() == 2);
+            check_dynamics(d, w);
         }
     }
 }

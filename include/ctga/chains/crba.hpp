@@ -143,7 +143,16 @@ constexpr joint_matrix<Tree, T> crba_world(const model<Tree, T>& m, const config
     for (std::size_t i = Tree::size; i-- > 0;)  // the composites: children come after their parent
         if (Tree::parent[i] >= 0) g.N[static_cast<std::size_t>(Tree::parent[i])] = g.N[static_cast<std::size_t>(Tree::parent[i])] + g.N[i];
     using ancestors = branch_tables<Tree>;
-    joint_matrix<Tree, T> H{};
+    // every entry of H is written below but the structural zeros (dofs on different branches):
+    // a tree with none (a serial chain) is not cleared first (the 30-body chain: 7 KB, 70 ns)
+    constexpr bool no_zeros = [] {
+        for (std::size_t k = 0; k < Tree::nv; ++k)
+            for (std::size_t j = 0; j < k; ++j)
+                if (!Tree::supports(Tree::body_of_dof[j], Tree::body_of_dof[k])) return false;
+        return true;
+    }();
+    joint_matrix<Tree, T> H;
+    if constexpr (!no_zeros) H = {};
     for (std::size_t i = 0; i < Tree::size; ++i)
         for (std::size_t k = Tree::v_offset[i]; k < Tree::v_offset[i + 1]; ++k) {
             const coscrew<T> F = momentum(g.N[i], g.S[k]);

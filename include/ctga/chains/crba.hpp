@@ -8,7 +8,9 @@
 //   54m 50a); F = N^c_i S_ik, then H(j, l) = F(S_jl) for body i's own dofs and, moving F out
 //   through X_i, X_λ(i), … (24m 18a each), each ancestor j. An axis joint's S is one blade, so
 //   N S and F(S) cost almost nothing; the transforms, one per (dof, ancestor body), dominate.
-//   Unrolled body by body. With mimic joints the entries are summed into H = Gᵀ H_all G.
+//   Body by body as each_body visits them (runs.hpp); the walk up the ancestors unrolled from a
+//   body of compile-time index, else a loop that visits each ancestor as its kind. With mimic
+//   joints the entries are summed into H = Gᵀ H_all G.
 // - in the world frame (world): with every body's S and N moved out once (world_geometry.hpp),
 //   the composites are sums (10a per body) and each entry one pairing of world co-screw and
 //   screw (6m 5a), so an entry costs no transform: cheaper for deep trees, whose (dof, ancestor)
@@ -141,7 +143,7 @@ constexpr joint_matrix<Tree, T> crba_world(const model<Tree, T>& m, const config
     world_geometry<Tree, T> g{uninitialized};
     fill_world_geometry(g, m, q);
     for (std::size_t i = Tree::size; i-- > 0;)  // the composites: children come after their parent
-        if (Tree::parent[i] >= 0) g.N[static_cast<std::size_t>(Tree::parent[i])] = g.N[static_cast<std::size_t>(Tree::parent[i])] + g.N[i];
+        if (const int p = Tree::parent[i]; p >= 0) g.N[static_cast<std::size_t>(p)] = g.N[static_cast<std::size_t>(p)] + g.N[i];
     using ancestors = branch_tables<Tree>;
     // every entry of H is written below but the structural zeros (dofs on different branches):
     // a tree with none (a serial chain) is not cleared first (the 30-body chain: 7 KB, 70 ns)

@@ -205,10 +205,10 @@ inline constexpr std::array<double, 4> frame_rotation{0.7, 1.0 / 3, 2.0 / 3, 2.0
 
 template <class J>
 constexpr sp::joint_kind kind_of() {
-    if constexpr (std::is_same_v<J, ch::revolute_x>) return sp::joint_kind::revolute_x;
-    else if constexpr (std::is_same_v<J, ch::revolute_y>) return sp::joint_kind::revolute_y;
-    else if constexpr (std::is_same_v<J, ch::revolute_z>) return sp::joint_kind::revolute_z;
-    else if constexpr (std::is_same_v<J, ch::floating>) return sp::joint_kind::floating;
+    if constexpr (std::is_same_v<J, ch::revolute_x> || std::is_same_v<J, ch::aligned<ch::revolute_x>>) return sp::joint_kind::revolute_x;
+    else if constexpr (std::is_same_v<J, ch::revolute_y> || std::is_same_v<J, ch::aligned<ch::revolute_y>>) return sp::joint_kind::revolute_y;
+    else if constexpr (std::is_same_v<J, ch::revolute_z> || std::is_same_v<J, ch::aligned<ch::revolute_z>>) return sp::joint_kind::revolute_z;
+    else if constexpr (std::is_same_v<J, ch::floating> || std::is_same_v<J, ch::aligned<ch::floating>>) return sp::joint_kind::floating;
     else return sp::joint_kind::fixed;
 }
 

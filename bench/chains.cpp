@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
     add_humanoid(table);
     add_derivatives_arm7(table);
     add_derivatives_chain30(table);
+    add_derivatives_chain30_aba(table);
     add_derivatives_legged(table);
 #endif
     return bench::run(table, argc, argv);

@@ -190,16 +190,23 @@ void add_derivative(std::vector<entry>& table, const std::string& name, const de
                      }});
 }
 
-// rnea_derivatives_<label>/ctga, /dual, /fd; aba_derivatives_<label>/…; minverse_<label>/ctga
-template <class Tree>
+// rnea_derivatives_<label>/ctga, /dual, /fd; aba_derivatives_<label>/…; minverse_<label>/ctga; or
+// only the dynamics listed (D...: a tree's kernels split over units, each within the compile budget)
+template <dynamics... D, class Tree>
 void add_derivatives(std::vector<entry>& table, const std::string& label, const derivative_fixture<Tree>& d) {
-    add_derivative<dynamics::inverse, differentiation::ctga>(table, "rnea_derivatives_" + label + "/ctga", d);
-    add_derivative<dynamics::inverse, differentiation::dual>(table, "rnea_derivatives_" + label + "/dual", d);
-    add_derivative<dynamics::inverse, differentiation::fd>(table, "rnea_derivatives_" + label + "/fd", d);
-    add_derivative<dynamics::forward, differentiation::ctga>(table, "aba_derivatives_" + label + "/ctga", d);
-    add_derivative<dynamics::forward, differentiation::dual>(table, "aba_derivatives_" + label + "/dual", d);
-    add_derivative<dynamics::forward, differentiation::fd>(table, "aba_derivatives_" + label + "/fd", d);
-    add_derivative<dynamics::inverse_mass, differentiation::ctga>(table, "minverse_" + label + "/ctga", d);
+    constexpr auto wanted = [](dynamics a) { return sizeof...(D) == 0 || ((D == a) || ...); };
+    if constexpr (wanted(dynamics::inverse)) {
+        add_derivative<dynamics::inverse, differentiation::ctga>(table, "rnea_derivatives_" + label + "/ctga", d);
+        add_derivative<dynamics::inverse, differentiation::dual>(table, "rnea_derivatives_" + label + "/dual", d);
+        add_derivative<dynamics::inverse, differentiation::fd>(table, "rnea_derivatives_" + label + "/fd", d);
+    }
+    if constexpr (wanted(dynamics::forward)) {
+        add_derivative<dynamics::forward, differentiation::ctga>(table, "aba_derivatives_" + label + "/ctga", d);
+        add_derivative<dynamics::forward, differentiation::dual>(table, "aba_derivatives_" + label + "/dual", d);
+        add_derivative<dynamics::forward, differentiation::fd>(table, "aba_derivatives_" + label + "/fd", d);
+    }
+    if constexpr (wanted(dynamics::inverse_mass))
+        add_derivative<dynamics::inverse_mass, differentiation::ctga>(table, "minverse_" + label + "/ctga", d);
 }
 
 }  // namespace bench::chains

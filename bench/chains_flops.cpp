@@ -66,6 +66,7 @@ double scalar_peak(int seed) {
 
 int main(int argc, char**) {
     run<arm7_tree>("arm7", arm7());
+    run<arm7_general_tree>("arm7_general", arm7());  // the arm's joints not declared aligned
     run<chain30_tree>("chain30", chain<30>());
     run<legged_tree>("tree", legged());
     run<legged_tree>("quadruped", solo12());

@@ -113,7 +113,8 @@ void add_legged(std::vector<entry>& table);  // and the quadruped
 void add_humanoid(std::vector<entry>& table);
 void add_scaling(std::vector<entry>& table);  // CTGA_CHAINS_SCALING: chains of those sizes
 void add_derivatives_arm7(std::vector<entry>& table);  // the derivatives (chains_derivatives.hpp)
-void add_derivatives_chain30(std::vector<entry>& table);
+void add_derivatives_chain30(std::vector<entry>& table);      // rnea_derivatives, minverse
+void add_derivatives_chain30_aba(std::vector<entry>& table);  // aba_derivatives
 void add_derivatives_legged(std::vector<entry>& table);
 
 }  // namespace bench::chains

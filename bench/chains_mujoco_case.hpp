@@ -20,10 +20,9 @@ namespace bench::chains {
 
 namespace mujoco_detail {
 
-// The joint of a description's body; revolute_axis and prismatic_axis take the body's `axis`
-// field if the description has one.
-template <class B>
-mujoco_body body_of(const B& b) {
+// The joint of a description's body (the benchmarks' trees have axis joints, fixed and floating
+// joints; a joint about a run-time axis would be left unsupported, and the case refused).
+inline mujoco_body body_of(const body_description& b) {
     mujoco_body out{b.parent, mujoco_joint::unsupported, {0, 0, 0}, b.t, b.mass, b.com, b.Ic};
     using k = sp::joint_kind;
     switch (b.kind) {
@@ -34,23 +33,11 @@ mujoco_body body_of(const B& b) {
         case k::prismatic_y: out.joint = mujoco_joint::slide, out.axis = {0, 1, 0}; break;
         case k::prismatic_z: out.joint = mujoco_joint::slide, out.axis = {0, 0, 1}; break;
         case k::revolute_axis:
-        case k::prismatic_axis:
-            if constexpr (requires { b.axis[2]; }) {
-                out.joint = b.kind == k::revolute_axis ? mujoco_joint::hinge : mujoco_joint::slide;
-                out.axis = {b.axis[0], b.axis[1], b.axis[2]};
-            }
-            break;
+        case k::prismatic_axis: break;
         case k::fixed: out.joint = mujoco_joint::fixed; break;
         case k::floating: out.joint = mujoco_joint::free; break;
     }
     return out;
-}
-
-// H(i, j) of crba's result: a row-major array of rows, or a matrix with operator()(i, j).
-template <class M>
-double entry_of(const M& H, std::size_t i, std::size_t j) {
-    if constexpr (requires { H(i, j); }) return static_cast<double>(H(i, j));
-    else return static_cast<double>(H[i][j]);
 }
 
 }  // namespace mujoco_detail
@@ -96,7 +83,7 @@ mujoco_case make_mujoco_case(const std::string& label, [[maybe_unused]] const fi
                 const auto H = ch::crba(f.m, s.q);
                 std::vector<double> h(Tree::nv * Tree::nv);
                 for (std::size_t i = 0; i < Tree::nv; ++i)
-                    for (std::size_t j = 0; j < Tree::nv; ++j) h[i * Tree::nv + j] = mujoco_detail::entry_of(H, i, j);
+                    for (std::size_t j = 0; j < Tree::nv; ++j) h[i * Tree::nv + j] = H[i][j];
                 c.H_ref.push_back(std::move(h));
             }
             if constexpr (wanted(algorithm::aba)) {

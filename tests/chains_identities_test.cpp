@@ -363,6 +363,19 @@ TEST_CASE("chains: bad input is reported, never a silent NaN" CTGA_TEST_PART_NAM
         CHECK(ch::make_link<ch::prismatic_along>(g, ok, ctga::vec3<double>{0.0, 0.0, 0.0}).error == ctga::error_code::not_a_unit_axis);
         CHECK(ch::make_link<ch::revolute_about>(g, ok, ctga::vec3<double>{nan, 0.0, 1.0}).error == ctga::error_code::non_finite);
         CHECK(ch::make_link<ch::revolute_z>(ctga::motor<double>{}, ok).error == ctga::error_code::not_a_motor);
+        // an aligned joint's placement must be a translation: turned turns by 1 rad about z; g, a
+        // translation, is accepted
+        const ctga::motor<double> turned = ctga::rigid_motion(ctga::make_translator(0.0, 0.0, 0.3), ctga::make_rotor(1.0, 0.0, 0.0, 1.0));
+        CHECK(ch::make_link<ch::aligned<ch::revolute_z>>(turned, ok).error == ctga::error_code::not_aligned);
+        CHECK(ch::make_link<ch::aligned<ch::floating>>(turned, ok).error == ctga::error_code::not_aligned);
+        CHECK(ch::make_link<ch::aligned<ch::revolute_z>>(g, ok));
+        const ctga::motor<double> shifted = ctga::motor<double>(ctga::make_translator(0.1, -0.2, 0.3));
+        const auto aligned_link = ch::make_link<ch::aligned<ch::revolute_z>>(shifted, ok);
+        REQUIRE(aligned_link);
+        CHECK(aligned_link->placement.t == ctga::vec3<double>{0.1, -0.2, 0.3});
+        // a turn of 1e-9 rad is no rounding: refused too
+        const ctga::motor<double> nearly = ctga::rigid_motion(ctga::make_translator(0.1, 0.0, 0.0), ctga::make_rotor(1e-9, 0.0, 0.0, 1.0));
+        CHECK(ch::make_link<ch::aligned<ch::prismatic_x>>(nearly, ok).error == ctga::error_code::not_aligned);
         // a placement far from a unit motor is refused, not renormalised into another motion: the
         // rotor cos ½ + 5 sin ½ e1e2 (an axis (0, 0, 5) used as if unit) would have become a
         // rotation by 2.44 rad

@@ -4,7 +4,7 @@
 // seed (random_structure below), 1 to 30 bodies mixing every joint type, some on a floating base,
 // and the benchmarks' 39-body humanoid with joint kinds drawn at random (random_kinds);
 // their parameters and states are drawn at run time, the same numbers given to both.
-// PARTS: 10
+// PARTS: 11
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -108,7 +108,7 @@ void compare(std::uint64_t seed, int draws) {
 }  // namespace
 
 // Part 0: small trees; 1, 2 and 7: twelve bodies (7: the repeated legs); 3 to 6: thirty bodies,
-// 8 and 9: the humanoid, each tree's checks in two units (each unit within the compile budget: as one unit the file took
+// 8 and 9: the humanoid, 10: small trees with aligned joints, each tree's checks in two units (each unit within the compile budget: as one unit the file took
 // 46 s and 1.6 GB with g++).
 #define CHAINS_CASE(part, name) TEST_CASE("chains: FK, RNEA, ABA, CRBA, Jacobians and energies agree with Featherstone's reference, " name)
 #if CTGA_TEST_PART_HOLDS(0)
@@ -117,6 +117,14 @@ CHAINS_CASE(0, "1 to 7 bodies") {
     compare<random_structure<2, 2, false>::type>(12, 20);
     compare<random_structure<3, 5, false>::type>(13, 20);
     compare<random_structure<4, 7, true>::type>(14, 20);
+}
+#endif
+#if CTGA_TEST_PART_HOLDS(10)
+// About half the joints aligned (placements translations: each body's map a turn about an axis, or
+// none, whose zeros the transforms skip), on a fixed and on a floating base.
+CHAINS_CASE(10, "aligned joints") {
+    compare<random_structure<41, 7, false, true>::type>(41, 20);
+    compare<random_structure<42, 9, true, true>::type>(42, 20);
 }
 #endif
 #if CTGA_TEST_PART_HOLDS(1)
@@ -163,9 +171,9 @@ CHAINS_CASE(4, "30 bodies: ABA, Jacobians") {
 }
 #endif
 #if CTGA_TEST_PART_HOLDS(8) || CTGA_TEST_PART_HOLDS(9)
-// The humanoid's shape (39 bodies on a floating base) with every joint but the base's drawn:
-// a tree visited by kind (runs.hpp), CRBA in body frames.
-using random_humanoid = ctga::test::random_kinds<31, bench::chains::humanoid_tree>::type;
+// The humanoid's shape (39 bodies on a floating base) with every joint but the base's drawn, about
+// half of them aligned: a tree visited by kind (runs.hpp), CRBA in body frames.
+using random_humanoid = ctga::test::random_kinds<31, bench::chains::humanoid_tree, true>::type;  // half aligned
 static_assert(ch::run_detail::plan<random_humanoid>::at(0).by_kind, "the humanoid is visited by kind");
 #endif
 #if CTGA_TEST_PART_HOLDS(8)

@@ -115,16 +115,20 @@ constexpr ch::coupling<double> arm_coupling{0.7, -0.1};
 // Two arms on a floating base, each a parallel gripper whose right finger follows its left one,
 // and a mast: 20 bodies, more steps than runs make small, so the passes visit them by kind
 // (runs.hpp), mimic joints among them.
+// The left arm and the mast are aligned (ch::aligned: their placements translations), the right
+// arm is not.
+template <class J>
+using al = ch::aligned<J>;
 using two_grippers = ch::tree<ch::link<-1, ch::floating>,                                               //  0 base
-                              ch::link<0, ch::revolute_z>, ch::link<1, ch::revolute<ch::axis::minus_y>>,  //  1 left arm
-                              ch::link<2, ch::revolute_x>, ch::link<3, ch::revolute_y>, ch::link<4, ch::revolute_about>,
-                              ch::link<5, ch::prismatic_x>, ch::link<5, ch::mimic<ch::prismatic_x, 6>>,  //  6, 7 fingers
+                              ch::link<0, al<ch::revolute_z>>, ch::link<1, al<ch::revolute<ch::axis::minus_y>>>,  //  1 left arm
+                              ch::link<2, al<ch::revolute_x>>, ch::link<3, al<ch::revolute_y>>, ch::link<4, al<ch::revolute_about>>,
+                              ch::link<5, al<ch::prismatic_x>>, ch::link<5, ch::mimic<al<ch::prismatic_x>, 6>>,  //  6, 7 fingers
                               ch::link<0, ch::fixed>,                                                   //  8 torso
                               ch::link<8, ch::revolute_z>, ch::link<9, ch::revolute<ch::axis::minus_y>>,  //  9 right arm
                               ch::link<10, ch::revolute_x>, ch::link<11, ch::revolute_y>, ch::link<12, ch::revolute_about>,
                               ch::link<13, ch::prismatic_x>, ch::link<13, ch::mimic<ch::prismatic_x, 14>>,  // 14, 15 fingers
-                              ch::link<0, ch::prismatic<ch::axis::minus_z>>, ch::link<16, ch::revolute_z>,  // 16 mast
-                              ch::link<17, ch::revolute_y>, ch::link<18, ch::revolute_x>>;
+                              ch::link<0, al<ch::prismatic<ch::axis::minus_z>>>, ch::link<16, al<ch::revolute_z>>,  // 16 mast
+                              ch::link<17, al<ch::revolute_y>>, ch::link<18, al<ch::revolute_x>>>;
 static_assert(ch::run_detail::plan<two_grippers>::at(0).by_kind, "two_grippers is visited by kind");
 
 // Joints about −x, −y and along −z without mimic joints: forward dynamics by the articulated-body
@@ -169,6 +173,8 @@ struct ref_joint<ch::floating> {
 };
 template <class J, std::size_t M>
 struct ref_joint<ch::mimic<J, M>> : ref_joint<J> {};
+template <class J>
+struct ref_joint<ch::aligned<J>> : ref_joint<J> {};
 
 // axis::x, y, z, minus_x, minus_y, minus_z as a unit vector
 inline fs::vec3 axis_vector(int a) { return (a < 3 ? 1.0 : -1.0) * fs::vec3::Unit(a % 3); }
@@ -255,7 +261,7 @@ draw<Tree> make_draw(std::mt19937_64& rng, const ch::coupling<double>& coupling)
             b.parent = Tree::parent[I];
             b.kind = ref_joint<J>::kind;
             b.axis = ref_joint<J>::axis >= 0 ? axis_vector(ref_joint<J>::axis) : fs::random_unit_vec3(rng);
-            b.rotation = fs::random_rotation(rng);
+            b.rotation = ch::is_aligned<J> ? fs::mat3::Identity() : fs::random_rotation(rng);
             b.translation = fs::uniform_vec3(rng, 0.5);
             b.mass = fs::uniform(rng, 0.5, 2.0);
             b.com = fs::uniform_vec3(rng, 0.3);

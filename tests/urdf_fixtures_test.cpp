@@ -100,7 +100,8 @@ ch::model<Tree> built(const ctga::checked<ch::model<Tree>>& m) {
 // Per body of a tree: whether its joint is fixed.
 template <class Tree>
 constexpr std::array<bool, Tree::size> fixed_joints = []<std::size_t... I>(std::index_sequence<I...>) {
-    return std::array<bool, Tree::size>{std::is_same_v<typename Tree::template joint_at<I>, ch::fixed>...};
+    return std::array<bool, Tree::size>{(std::is_same_v<typename Tree::template joint_at<I>, ch::fixed> ||
+                                         std::is_same_v<typename Tree::template joint_at<I>, ch::aligned<ch::fixed>>)...};
 }(std::make_index_sequence<Tree::size>{});
 
 // What a comparison checks: the frames (poses, Jacobians), the dynamics (RNEA, CRBA, ABA, centre
@@ -222,22 +223,24 @@ static_assert(ur5e_kept::tree::size == 10 && ur5e_kept::tree::frame_count == 11)
 static_assert(legged::tree::size == 13 && legged::tree::nq == 8 + 12 && legged::tree::nv == 6 + 12 &&
               legged::tree::frame_count == 26);
 static_assert(legged_kept::tree::size == 26 && legged_kept::tree::nv == 6 + 12);
-static_assert(std::is_same_v<legged::tree::joint_at<0>, ch::floating>);
-static_assert(std::is_same_v<legged::tree::joint_at<9>, ch::revolute<ch::axis::minus_y>>);   // LH_KFE, axis 0 −1 0
-static_assert(std::is_same_v<legged::tree::joint_at<12>, ch::revolute<ch::axis::minus_y>>);  // RH_KFE
+// (every joint of these two fixtures has rpy 0 0 0: aligned)
+static_assert(std::is_same_v<legged::tree::joint_at<0>, ch::aligned<ch::floating>>);
+static_assert(std::is_same_v<legged::tree::joint_at<9>, ch::aligned<ch::revolute<ch::axis::minus_y>>>);   // LH_KFE, axis 0 −1 0
+static_assert(std::is_same_v<legged::tree::joint_at<12>, ch::aligned<ch::revolute<ch::axis::minus_y>>>);  // RH_KFE
 // mobile_gripper: the planar base as three bodies, then the arm; finger_right mimics finger_left
 static_assert(mobile_gripper::tree::size == 9 && mobile_gripper::tree::nq == 8 && mobile_gripper::tree::nv == 8);
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<0>, ch::prismatic_x>);
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<1>, ch::prismatic_y>);
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<2>, ch::revolute_z>);
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<3>, ch::revolute_z>);                        // continuous +z
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<4>, ch::revolute<ch::axis::minus_y>>);       // 0 −1 0
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<5>, ch::prismatic<ch::axis::minus_z>>);      // 0 0 −1
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<6>, ch::revolute_about>);                    // 0.6 0 0.8
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<7>, ch::prismatic_y>);
-static_assert(std::is_same_v<mobile_gripper::tree::joint_at<8>, ch::mimic<ch::prismatic_y, 7>>);
-static_assert(std::is_same_v<mobile_gripper_ind::tree::joint_at<8>, ch::prismatic_y> && mobile_gripper_ind::tree::nv == 9);
-static_assert(std::is_same_v<mobile_gripper_kept::tree::joint_at<10>, ch::mimic<ch::prismatic_y, 9>>);
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<0>, ch::aligned<ch::prismatic_x>>);
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<1>, ch::aligned<ch::prismatic_y>>);
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<2>, ch::aligned<ch::revolute_z>>);
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<3>, ch::aligned<ch::revolute_z>>);                   // continuous +z
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<4>, ch::aligned<ch::revolute<ch::axis::minus_y>>>);  // 0 −1 0
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<5>, ch::aligned<ch::prismatic<ch::axis::minus_z>>>); // 0 0 −1
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<6>, ch::aligned<ch::revolute_about>>);               // 0.6 0 0.8
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<7>, ch::aligned<ch::prismatic_y>>);
+static_assert(std::is_same_v<mobile_gripper::tree::joint_at<8>, ch::mimic<ch::aligned<ch::prismatic_y>, 7>>);
+static_assert(std::is_same_v<mobile_gripper_ind::tree::joint_at<8>, ch::aligned<ch::prismatic_y>> && mobile_gripper_ind::tree::nv == 9);
+static_assert(std::is_same_v<mobile_gripper_kept::tree::joint_at<10>, ch::mimic<ch::aligned<ch::prismatic_y>, 9>>);
+static_assert(std::is_same_v<mobile_gripper_kept::tree::joint_at<3>, ch::fixed>);  // imu_joint turns
 static_assert(ch::frame_index<ur5e::tree, "tool0">() == 9 && ur5e::tree::frame_body[9] == 5);
 static_assert(ch::frame_index<legged::tree, "LF_FOOT">() == 10 && legged::tree::frame_body[10] == 3);
 

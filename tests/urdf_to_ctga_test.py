@@ -64,11 +64,22 @@ def numbers(s):
     return [float(x) for x in re.findall(r"T\(([^()]*)\)", s)]
 
 
-def tree_lines(header):
-    """[(parent, joint type without the ctga::chains:: prefix)] of the tree's link entries."""
+def strip_aligned(t):
+    """t without the aligned<...> the converter puts on a joint whose placement does not turn
+    (test_aligned checks where it goes)."""
+    return re.sub(r"ctga::chains::aligned<(.*)>$", r"\1", re.sub(r"ctga::chains::aligned<([^<>]*(?:<[^<>]*>)?)>", r"\1", t))
+
+
+def link_entries(header):
+    """[(parent, joint type as emitted)] of the tree's link entries."""
     body = header[header.index("using tree = ctga::chains::tree<"):header.index(">;  // frame")]
-    return [(p, t.replace("ctga::chains::", "", 1))
-            for p, t in re.findall(r"^    ctga::chains::link<(-?\d+), (.+?)>,  // body", body, re.M)]
+    return re.findall(r"^    ctga::chains::link<(-?\d+), (.+?)>,  // body", body, re.M)
+
+
+def tree_lines(header):
+    """[(parent, joint type without the ctga::chains:: prefix and without aligned<...>)] of the
+    tree's link entries."""
+    return [(p, strip_aligned(t).replace("ctga::chains::", "", 1)) for p, t in link_entries(header)]
 
 
 def frame_lines(header):
@@ -517,6 +528,30 @@ class Converter(unittest.TestCase):
         self.assert_error(robot(link("base", ""), joint("p", "planar", "base", "a"), link("a", "")), 'joint "p"',
                           "no mass in its subtree")
 
+    # ---- aligned joints -----------------------------------------------------------------------------
+
+    def test_aligned(self):
+        """A body whose placement does not turn gets aligned<Joint>; one whose placement turns (its own
+        rpy, or a merged fixed joint's) keeps the plain joint; a mimic wraps the aligned joint."""
+        header = self.convert(robot(
+            link("base", ""),
+            joint("a", "revolute", "base", "l1", xyz="0 0 0.3"), link("l1"),
+            joint("b", "revolute", "l1", "l2", xyz="0 0.1 0", rpy="0 0 1.5707963267948966", axis="0 1 0"), link("l2"),
+            joint("f", "fixed", "l2", "flange", rpy="0.5 0 0"), link("flange"),
+            joint("c", "prismatic", "flange", "l3", axis="1 0 0"), link("l3"),
+            joint("d", "revolute", "l3", "l4", xyz="0.2 0 0", rpy="0 0 0", axis="0 1 0",
+                  extra='<mimic joint="a" multiplier="2"/>'), link("l4")))
+        self.assertEqual(link_entries(header), [
+            ("-1", "ctga::chains::aligned<ctga::chains::revolute_z>"),
+            ("0", "ctga::chains::revolute_y"),
+            ("1", "ctga::chains::prismatic_x"),
+            ("2", "ctga::chains::mimic<ctga::chains::aligned<ctga::chains::revolute_y>, 0>")])
+        # with a floating base the base's identity placement is aligned too
+        header = self.convert(robot(link("base"), joint("a", "revolute", "base", "l1", rpy="0.1 0 0"), link("l1")),
+                              "--floating-base")
+        self.assertEqual(link_entries(header), [("-1", "ctga::chains::aligned<ctga::chains::floating>"),
+                                                ("0", "ctga::chains::revolute_z")])
+
     # ---- mimic ------------------------------------------------------------------------------------
 
     def gripper(self, mimic='<mimic joint="left" multiplier="-1" offset="0.01"/>', kind="prismatic", extra=""):
@@ -531,7 +566,7 @@ class Converter(unittest.TestCase):
                                               ("0", "mimic<ctga::chains::prismatic<ctga::chains::axis::minus_y>, 2>"),
                                               ("0", "prismatic_y")])
         self.assertIn("ctga::chains::make_link<ctga::chains::mimic<"
-                      "ctga::chains::prismatic<ctga::chains::axis::minus_y>, 2>>(", header)
+                      "ctga::chains::aligned<ctga::chains::prismatic<ctga::chains::axis::minus_y>>, 2>>(", header)
         self.assertEqual(extra_args(body_block(header, 1)).strip(),
                          "),\n            ctga::chains::coupling<T>{T(-1.0), T(0.01)});")
         self.assertEqual(dofs(tree_lines(header)), 2)

@@ -153,14 +153,17 @@ def flops_section(flops_tsv, t):
            "",
            "| algorithm | tree | ctga m | ctga a | ctga d | Featherstone m | Featherstone a | ctga / Featherstone | rate | of peak |",
            "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |"]
-    for tree, _ in CHAIN_TREES:
+    # (arm7_general: the arm with its joints not declared aligned, timed as <algorithm>_arm7/ctga_general)
+    rows = [(tree, tree, "ctga") for tree, _ in CHAIN_TREES]
+    rows.insert(1, ("arm7_general", "arm7", "ctga_general"))
+    for tree, timed, impl in rows:
         for a in ("rnea", "aba", "crba"):
             c = counts.get((tree, a))
             if c is None:
                 continue
             m, ad, d, _ = c
-            ref = PUBLISHED_COUNTS[a](CHAIN_LENGTH[tree]) if tree in CHAIN_LENGTH else None
-            time = t.get((f"{a}_{tree}", "ctga"))
+            ref = PUBLISHED_COUNTS[a](CHAIN_LENGTH[timed]) if timed in CHAIN_LENGTH else None
+            time = t.get((f"{a}_{timed}", impl))
             rate = (m + ad + d) / time if time else None  # flops per ns = Gflop/s
             out.append(f"| {a} | {tree} | {m} | {ad} | {d} | {ref[0] if ref else '—'} | {ref[1] if ref else '—'} | "
                        f"{ratio(m + ad, sum(ref)) if ref else '—'} | "
@@ -175,6 +178,10 @@ def chains_section(chains_json, chains_instr, scaling_svg, scaling_jsons):
            "`ctga_chains_bench` (`bench/chains.cpp`): ctga::chains against hand-written spatial code",
            "(`bench/spatial_chains.hpp`: Featherstone's algorithms with Pinocchio-like joint specialisation,",
            "3×3 rotation + translation placements, run-time structure). Trees in `bench/chain_models.hpp`;",
+           "their placements are translations, and ctga's tree types say so (every joint `aligned`,",
+           "`chains/joints.hpp`, as `tools/urdf_to_ctga.py` writes a joint with rpy 0 0 0): each body's",
+           "rotation is its joint's own, whose zeros ctga skips, while the spatial code multiplies general",
+           "rotations. ctga_general below is the arm with its joints not declared aligned.",
            "one non-inlined call on one of 64 random states; fk is poses, velocities and accelerations;",
            "jacobian is the local Jacobian of a placed frame (arm7: on the last body; tree: a front foot),",
            "the spatial code's as Pinocchio's computeFrameJacobian (all poses, then the path's columns).", "",
@@ -199,6 +206,11 @@ def chains_section(chains_json, chains_instr, scaling_svg, scaling_jsons):
             out.append(f"| {a} | {tree} | {fmt_time(c)} | {fmt_time(sp)} | {fmt_time(mj) if mj else '—'} | "
                        f"{ratio(c, sp)}{mark} | {ratio(mj, c) if mj else '—'}{mj_mark} | "
                        f"{ins.get((name, 'ctga'), '—')} | {ins.get((name, 'spatial'), '—')} | {ins.get((name, 'mujoco'), '—')} |")
+    general = [(a, t.get((f"{a}_arm7", "ctga_general")), t.get((f"{a}_arm7", "spatial"))) for a in ("rnea", "aba", "crba")]
+    if all(g and sp for _, g, sp in general):
+        out += ["", "ctga_general, the arm with its joints not declared aligned (its placements' rotations read at",
+                "run time, as the spatial code reads them): " +
+                ", ".join(f"{a} {fmt_time(g)} ({ratio(g, sp)} × spatial)" for a, g, sp in general) + "."]
     out += ["", "Trees: " + "; ".join(f"**{k}** {d}" for k, d in CHAIN_TREES) + ".",
             "Targets (✓/✗): issue 29, RNEA, ABA and CRBA ctga/spatial ≤ 1.0 on every tree and mujoco/ctga ≥ 2;",
             "issue 27, frame Jacobians ≤ 1.0.", ""]

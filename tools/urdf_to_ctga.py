@@ -42,6 +42,9 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     with the normalised axis (passed to make_link); prismatic likewise -> prismatic_x/_y/_z,
     prismatic<axis::minus_...> or prismatic_along; fixed -> fixed (--keep-fixed only); floating ->
     floating (q: the 8 coefficients of a motor; v: the body screw); the URDF default axis is 1 0 0.
+    A body whose placement does not turn (its joint's rpy 0 0 0, and those of the fixed joints merged
+    on the way, composed exactly) gets its joint as aligned<Joint> (mimic<aligned<Joint>, M> for
+    a mimic): its map's rotation is the joint's own, whose zeros the algorithms skip.
   * planar (axis = the plane normal n) -> three bodies in a chain: prismatic along u1, prismatic
     along u2, revolute about n, (u1, u2, n) right-handed orthonormal. The first carries the joint's
     origin as its placement, the other two identity placements. The first two are massless virtual
@@ -592,6 +595,8 @@ def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupl
         return name
 
     def new_body(parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, **kw):
+        if placement.q == IDENTITY_Q:
+            cpp_joint = f"ctga::chains::aligned<{cpp_joint}>"
         b = Body(len(bodies), parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, **kw)
         bodies.append(b)
         return b
@@ -750,7 +755,7 @@ def _mass_properties(model, strict):
         if b.parent >= 0:
             subtree[b.parent] += subtree[b.index]
     for b in bodies:
-        if b.cpp_joint != "ctga::chains::fixed" and not subtree[b.index] > 0:
+        if b.cpp_joint not in ("ctga::chains::fixed", "ctga::chains::aligned<ctga::chains::fixed>") and not subtree[b.index] > 0:
             name = b.urdf_joint.name if b.urdf_joint is not None else b.joint_name
             raise UrdfError(f'joint "{name}": no mass in its subtree: the mass matrix would be singular and ABA '
                             "would divide by zero")

@@ -35,9 +35,10 @@ constexpr std::uint64_t splitmix(std::uint64_t& s) {
 }
 
 // joint kinds by number: 0–2 revolute about x, y, z; 3–5 prismatic along x, y, z; 6 revolute
-// about a run-time axis; 7 prismatic along one; 8 fixed; 9 floating (body 0 only)
+// about a run-time axis; 7 prismatic along one; 8 fixed; 9 floating (body 0 only); K + 10: the
+// same joint aligned (ch::aligned: its placement a translation)
 template <int K>
-using joint_of = std::conditional_t<
+using plain_joint_of = std::conditional_t<
     K == 0, ch::revolute_x,
     std::conditional_t<
         K == 1, ch::revolute_y,
@@ -52,8 +53,10 @@ using joint_of = std::conditional_t<
                         std::conditional_t<K == 6, ch::revolute_about,
                                            std::conditional_t<K == 7, ch::prismatic_along,
                                                               std::conditional_t<K == 8, ch::fixed, ch::floating>>>>>>>>>;
+template <int K>
+using joint_of = std::conditional_t<(K < 10), plain_joint_of<K>, ch::aligned<plain_joint_of<K % 10>>>;
 
-template <std::uint64_t Seed, std::size_t N, bool Floating>
+template <std::uint64_t Seed, std::size_t N, bool Floating, bool Aligned = false>
 struct random_structure {
     struct spec {
         std::array<int, N> parent{};
@@ -67,6 +70,7 @@ struct random_structure {
             // half the time the previous body (long chains), else any earlier body or the world
             s.parent[i] = i == 0 ? -1 : (r & 1) ? static_cast<int>(i) - 1 : static_cast<int>((r >> 8) % (i + 1)) - 1;
             s.kind[i] = (i == 0 && Floating) ? 9 : static_cast<int>((r >> 32) % 9);
+            if (Aligned && ((r >> 24) & 1)) s.kind[i] += 10;  // about half the joints aligned
         }
         return s;
     }();
@@ -77,13 +81,17 @@ struct random_structure {
 
 // A tree of the given shape (parents, body 0 on a floating joint) with the other joint kinds
 // drawn from the seed: the benchmarks' humanoid (bench/chain_trees.hpp) as a random tree.
-template <std::uint64_t Seed, class Shape>
+template <std::uint64_t Seed, class Shape, bool Aligned = false>
 struct random_kinds {
     static constexpr std::size_t N = Shape::size;
     static constexpr std::array<int, N> kind = [] {
         std::array<int, N> k{};
         std::uint64_t state = Seed;
-        for (std::size_t i = 0; i < N; ++i) k[i] = i == 0 ? 9 : static_cast<int>((splitmix(state) >> 32) % 9);
+        for (std::size_t i = 0; i < N; ++i) {
+            const std::uint64_t r = splitmix(state);
+            k[i] = i == 0 ? 9 : static_cast<int>((r >> 32) % 9);
+            if (Aligned && ((r >> 24) & 1)) k[i] += 10;
+        }
         return k;
     }();
     template <std::size_t... I>
@@ -102,6 +110,18 @@ struct draw {
     ch::joint_vector<Tree> qd{}, qdd{};
     Eigen::VectorXd qd_ref, qdd_ref;
 };
+
+// J without aligned<…>: the joint the reference is given (with an identity rotation when aligned)
+template <class J>
+struct plain {
+    using type = J;
+};
+template <class J>
+struct plain<ch::aligned<J>> {
+    using type = J;
+};
+template <class J>
+using plain_of = typename plain<J>::type;
 
 template <class J>
 constexpr int kind_number() {
@@ -127,7 +147,7 @@ draw<Tree> make_draw(std::mt19937_64& rng) {
     [&]<std::size_t... I>(std::index_sequence<I...>) {
         ([&] {
             using J = typename Tree::template joint_at<I>;
-            constexpr int k = kind_number<J>();
+            constexpr int k = kind_number<plain_of<J>>();
             fs::body& b = d.ref.bodies[I];
             b.parent = Tree::parent[I];
             b.kind = k <= 2 || k == 6 ? fs::joint_kind::revolute
@@ -135,7 +155,7 @@ draw<Tree> make_draw(std::mt19937_64& rng) {
                      : k == 8         ? fs::joint_kind::fixed
                                       : fs::joint_kind::floating;
             b.axis = k <= 5 ? fs::vec3::Unit(k % 3) : fs::random_unit_vec3(rng);
-            b.rotation = fs::random_rotation(rng);
+            b.rotation = ch::is_aligned<J> ? fs::mat3::Identity() : fs::random_rotation(rng);
             b.translation = fs::uniform_vec3(rng, 0.5);
             b.mass = fs::uniform(rng, 0.5, 2.0);
             b.com = fs::uniform_vec3(rng, 0.3);

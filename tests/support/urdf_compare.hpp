@@ -117,7 +117,7 @@ ch::configuration<Tree> random_configuration(std::mt19937_64& rng, Eigen::Vector
         ([&] {
             using J = typename Tree::template joint_at<I>;
             constexpr std::size_t o = Tree::q_offset[I];
-            if constexpr (std::is_same_v<J, ch::floating>) {
+            if constexpr (J::nq == 8) {  // floating (or aligned<floating>)
                 const Eigen::Quaterniond r(fs::random_rotation(rng));
                 const fs::vec3 t = fs::uniform_vec3(rng, 1.0);
                 const ctga::motor<double> g =

@@ -109,20 +109,20 @@ constexpr joint_vector<Tree, T> articulated_body(const model<Tree, T>& m, const 
                 constexpr std::size_t null = null_component<J>();
                 const articulated_inertia<T> Na = minus_joint<null>(NA[i], U[i], D_inverse[i]);
                 const coscrew<T> pa = pA[i] + momentum(Na, bias(b)) + U[i] * (u[i] * D_inverse[i]);
-                NA[b.p] = NA[b.p] + transform<null>(k.X[i], Na);
-                pA[b.p] = pA[b.p] + transform(k.X[i], pa);
+                NA[b.p] = NA[b.p] + transform<null, map_shape<J>>(k.X[i], Na);
+                pA[b.p] = pA[b.p] + transform<map_shape<J>>(k.X[i], pa);
             }
         } else if constexpr (J::nv == 0) {
             if constexpr (!B::root) {
-                NA[b.p] = NA[b.p] + transform(k.X[i], NA[i]);
-                pA[b.p] = pA[b.p] + transform(k.X[i], pA[i]);
+                NA[b.p] = NA[b.p] + transform<6, map_shape<J>>(k.X[i], NA[i]);
+                pA[b.p] = pA[b.p] + transform<map_shape<J>>(k.X[i], pA[i]);
             }
         } else {
             static_assert(J::nv == 6, "ctga::chains::aba: a joint has 0, 1 or 6 degrees of freedom");
             if constexpr (!B::root) {
                 const std::size_t o = b.v_own;
                 const coscrew<T> tau_i{tau[o], tau[o + 1], tau[o + 2], tau[o + 3], tau[o + 4], tau[o + 5]};
-                pA[b.p] = pA[b.p] + transform(k.X[i], tau_i);
+                pA[b.p] = pA[b.p] + transform<map_shape<J>>(k.X[i], tau_i);
             }
         }
     });
@@ -135,8 +135,8 @@ constexpr joint_vector<Tree, T> articulated_body(const model<Tree, T>& m, const 
         const std::size_t i = b.i, o = b.v_own;
         const auto& L = b.link(m);
         screw<T> a_parent;  // X_i⁻¹ a_λ
-        if constexpr (B::root) a_parent = world_acceleration(k.X[i], a_world);
-        else a_parent = transform_inverse(k.X[i], a[b.p]);
+        if constexpr (B::root) a_parent = world_acceleration<map_shape<J>>(k.X[i], a_world);
+        else a_parent = transform_inverse<map_shape<J>>(k.X[i], a[b.p]);
         if constexpr (J::nv == 0) {
             a[i] = a_parent;
         } else if constexpr (J::nv == 1) {

@@ -5,8 +5,9 @@
 // these sums, the cheaper one for the tree's shape taken at compile time (crba_cost):
 //
 // - in each body's frame (local): N^c_i = N_i + Σ_children X_c N^c_c (transform(X, body_inertia),
-//   54m 50a); F = N^c_i S_ik, then H(j, l) = F(S_jl) for body i's own dofs and, moving F out
-//   through X_i, X_λ(i), … (24m 18a each), each ancestor j. An axis joint's S is one blade, so
+//   54m 50a, 34m 33a across an aligned joint); F = N^c_i S_ik, then H(j, l) = F(S_jl) for body
+//   i's own dofs and, moving F out through X_i, X_λ(i), … (24m 18a each, 14m 10a aligned), each
+//   ancestor j. An axis joint's S is one blade, so
 //   N S and F(S) cost almost nothing; the transforms, one per (dof, ancestor body), dominate.
 //   Body by body as each_body visits them (runs.hpp); the walk up the ancestors unrolled from a
 //   body of compile-time index, else a loop that visits each ancestor as its kind. With mimic
@@ -85,16 +86,24 @@ CTGA_ALWAYS_INLINE constexpr void fill_ancestors(const B& b, const model<Tree, T
     if constexpr (B::constant) {
         if constexpr (!B::root) {
             using parent = run_detail::single_body<Tree, B::p>;
-            const coscrew<T> Fp = transform(X[B::i], F);
+            const coscrew<T> Fp = transform<map_shape<typename B::joint>>(X[B::i], F);
             fill(parent{}, Fp);
             fill_ancestors(parent{}, m, links, X, H, col, Fp, w_col...);
         }
     } else {
-        coscrew<T> Fa = F;
-        for (std::size_t a = b.i; Tree::parent[a] >= 0;) {
-            Fa = transform(X[a], Fa);
-            a = static_cast<std::size_t>(Tree::parent[a]);
-            visit_body(m, links, a, [&](const auto& ancestor) CTGA_INLINE_LAMBDA { fill(ancestor, Fa); });
+        // each ancestor, visited as its kind, fills its rows and moves F on by its own map
+        if constexpr (!B::root) {
+            coscrew<T> Fa = transform<map_shape<typename B::joint>>(X[b.i], F);
+            for (std::size_t a = b.p;; a = static_cast<std::size_t>(Tree::parent[a])) {
+                bool top = false;
+                visit_body<Tree, T>(links, a, [&](const auto& ancestor) CTGA_INLINE_LAMBDA {
+                    using A = std::remove_cvref_t<decltype(ancestor)>;
+                    fill(ancestor, Fa);
+                    if constexpr (A::root) top = true;
+                    else Fa = transform<map_shape<typename A::joint>>(X[a], Fa);
+                });
+                if (top) break;
+            }
         }
     }
 }
@@ -112,7 +121,8 @@ constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const config
         return std::array<body_inertia<T>, Tree::size>{m.template link<I>().inertia...};
     }(std::make_index_sequence<Tree::size>{});
     each_body_backward(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
-        if constexpr (!std::remove_cvref_t<decltype(b)>::root) Nc[b.p] = Nc[b.p] + transform(X[b.i], Nc[b.i]);
+        using B = std::remove_cvref_t<decltype(b)>;
+        if constexpr (!B::root) Nc[b.p] = Nc[b.p] + transform<map_shape<typename B::joint>>(X[b.i], Nc[b.i]);
     });
     const auto links = body_links(m);
     joint_matrix<Tree, T> H{};
@@ -167,24 +177,37 @@ constexpr joint_matrix<Tree, T> crba_world(const model<Tree, T>& m, const config
     return H;
 }
 
-// The flops of each form for Tree's shape (axis joints' S one blade; the counts of the header):
-// local 104 per body and 42 per (dof, ancestor body); world 222 per body (placement 66,
-// inertia 104, composite 10, N S 42) and 11 per (dof, ancestor's or own dof) entry.
+// The flops of each form for Tree's shape (axis joints' S one blade), in terms of c_b, the cost of
+// applying body b's rotation (linear3::apply_cost of its map_shape: 15 dense, 6 for an aligned
+// joint's turn about an axis): local 34 + 6 c_b per body and 14 + 2 c_b per (dof, ancestor body
+// b) (a force transform, 12 + 2 c_b, and a pairing); world 173 + 4.5 c_b per body (the pose, the
+// inertia moved out, the composite, N S) and 12 per (dof, ancestor's or own dof) entry. Fitted to
+// the operations counted on serial chains of 10 and 20 bodies, dense and aligned
+// (bench/counting_scalar.hpp), within 1 % of them.
 template <class Tree>
 struct crba_cost {
+    static constexpr std::array<std::size_t, Tree::size> rotation = []<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<std::size_t, Tree::size>{linear3::apply_cost(map_shape<typename Tree::template joint_at<I>>)...};
+    }(std::make_index_sequence<Tree::size>{});
     static constexpr std::size_t local = [] {
-        std::size_t c = 104 * Tree::size;
+        std::size_t c = 0;
+        for (std::size_t b = 0; b < Tree::size; ++b) c += 34 + 6 * rotation[b];
         for (std::size_t k = 0; k < Tree::nv; ++k)
-            for (int b = Tree::parent[Tree::body_of_dof[k]]; b >= 0; b = Tree::parent[static_cast<std::size_t>(b)]) c += 42;
+            for (int b = Tree::parent[Tree::body_of_dof[k]]; b >= 0; b = Tree::parent[static_cast<std::size_t>(b)])
+                c += 14 + 2 * rotation[static_cast<std::size_t>(b)];
         return c;
     }();
     static constexpr std::size_t world = [] {
-        std::size_t c = 222 * Tree::size;
+        std::size_t c = 0;
+        for (std::size_t b = 0; b < Tree::size; ++b) c += 173 + 9 * rotation[b] / 2;
         for (std::size_t k = 0; k < Tree::nv; ++k)
-            for (std::size_t j = 0; j <= k; ++j) c += Tree::supports(Tree::body_of_dof[j], Tree::body_of_dof[k]) ? 11 : 0;
+            for (std::size_t j = 0; j <= k; ++j) c += Tree::supports(Tree::body_of_dof[j], Tree::body_of_dof[k]) ? 12 : 0;
         return c;
     }();
-    static constexpr bool in_world = !Tree::has_mimic && world < local;
+    // the world form's loops do less per second than the unrolled transforms (the 30-body aligned
+    // chain: local 2.14 µs for 13,410 flops, world 2.34 µs for 11,580; the 64-body one: 7.98 µs
+    // for 56,896 against 6.62 µs for 37,760), so it is taken below 0.8 × the local count
+    static constexpr bool in_world = !Tree::has_mimic && 5 * world < 4 * local;
 };
 }  // namespace algorithm_detail
 

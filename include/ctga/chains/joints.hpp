@@ -18,9 +18,14 @@
 //   fixed                   no motion                                       nq = nv = 0
 //   floating                a motor g (§3) relative to the joint frame      nq = 8, nv = 6
 //   mimic<J, M>             J (one dof) at q = r q_M + o, body M's joint    nq = nv = 0
+//   aligned<J>              J whose joint frame is aligned with the parent's: its placement a
+//                           pure translation (URDF rpy = 0, most joints of real robots)
 //
 // The body frame is the joint frame moved by the joint: its map in the parent's frame is
-// placement ∘ motion(q), a motor_map (R, t) (motor.hpp). The floating joint's velocity numbers
+// placement ∘ motion(q), a motor_map (R, t) (motor.hpp). For an aligned joint R is the joint's own
+// rotation, whose shape (linear3.hpp) the type knows: a turn about coordinate axis k has
+// R_kk = 1 and four more zeros, so a screw or co-screw moves across the joint with 4m 2a per
+// 3-vector instead of 9m 6a (Featherstone's X_J X_T split, §4.1), and the map costs no product. The floating joint's velocity numbers
 // are the body's screw relative to the joint frame in body coordinates, (ω, v), and its
 // configuration the eight coefficients of the motor in ctga::motor's order; it moves as
 // dg/dt = ½ g s (§3, body-frame velocity).
@@ -71,6 +76,30 @@ CTGA_ALWAYS_INLINE constexpr motor_map<T> rotate_about_axis(const motor_map<T>& 
     };
     return {{{{entry(0, 0), entry(0, 1), entry(0, 2)}, {entry(1, 0), entry(1, 1), entry(1, 2)}, {entry(2, 0), entry(2, 1), entry(2, 2)}}},
             P.t};
+}
+
+// The turn about coordinate axis K itself, R_K(q) (no flops): rotate_about_axis of the identity.
+template <int K, class T>
+CTGA_ALWAYS_INLINE constexpr mat3<T> axis_rotation(const T& c, const T& s) noexcept {
+    constexpr int a = (K + 1) % 3, b = (K + 2) % 3;
+    const auto entry = [&](int r, int j) CTGA_INLINE_LAMBDA -> T {
+        return r == K && j == K ? T(1) : r == K || j == K ? T(0) : r == j ? c : r == b && j == a ? s : -s;
+    };
+    return {{{entry(0, 0), entry(0, 1), entry(0, 2)}, {entry(1, 0), entry(1, 1), entry(1, 2)}, {entry(2, 0), entry(2, 1), entry(2, 2)}}};
+}
+// Its shape: entry (K, K) is 1, the rest of row and column K are 0.
+template <int K>
+inline constexpr linear3::shape axis_rotation_shape = [] {
+    linear3::shape out = linear3::dense;
+    for (int j = 0; j < 3; ++j) {
+        out.e[static_cast<std::size_t>(3 * K + j)] = j == K ? linear3::entry::one : linear3::entry::zero;
+        out.e[static_cast<std::size_t>(3 * j + K)] = j == K ? linear3::entry::one : linear3::entry::zero;
+    }
+    return out;
+}();
+template <class T>
+constexpr mat3<T> identity3() noexcept {
+    return {{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
 }
 
 // R u for the parameters' unit axis (column combination), and R·R_u(q) by Rodrigues' formula
@@ -153,6 +182,14 @@ struct revolute : joint_detail::one_blade<joint_detail::rotation_blade<A>, joint
         else
             return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, cs.cos, -cs.sin);
     }
+    // with the placement a translation t (aligned<revolute<A>>)
+    static constexpr linear3::shape aligned_shape = joint_detail::axis_rotation_shape<joint_detail::index_of(A)>;
+    template <class T>
+    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T* q) noexcept {
+        const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
+        const T s = joint_detail::sign_of(A) > 0 ? cs.sin : -cs.sin;
+        return {joint_detail::axis_rotation<joint_detail::index_of(A)>(cs.cos, s), t};
+    }
 };
 
 // Translation along a coordinate axis of the joint frame: t' = t ± q R e_k (3m 3a).
@@ -166,6 +203,15 @@ struct prismatic : joint_detail::one_blade<joint_detail::translation_blade<A>, j
         const T d = joint_detail::sign_of(A) > 0 ? q[0] : -q[0];
         return {placement.R, {placement.t[0] + d * placement.R[0][k], placement.t[1] + d * placement.R[1][k], placement.t[2] + d * placement.R[2][k]}};
     }
+    static constexpr linear3::shape aligned_shape = linear3::identity;
+    template <class T>
+    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T* q) noexcept {
+        constexpr int k = joint_detail::index_of(A);
+        const T d = joint_detail::sign_of(A) > 0 ? q[0] : -q[0];
+        vec3<T> out = t;
+        out[k] = out[k] + d;
+        return {joint_detail::identity3<T>(), out};
+    }
 };
 
 // Rotation about a unit axis u of the joint frame given at run time.
@@ -175,6 +221,12 @@ struct revolute_about : joint_detail::unit_axis_dof<"e2e3", "e3e1", "e1e2"> {
         const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
         return {joint_detail::multiply(placement.R, joint_detail::rodrigues(p.u, cs.cos, cs.sin)), placement.t};
     }
+    static constexpr linear3::shape aligned_shape = linear3::dense;
+    template <class T>
+    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>& p, const T* q) noexcept {
+        const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
+        return {joint_detail::rodrigues(p.u, cs.cos, cs.sin), t};
+    }
 };
 
 // Translation along a unit axis u of the joint frame given at run time: t' = t + q R u.
@@ -183,6 +235,11 @@ struct prismatic_along : joint_detail::unit_axis_dof<"e1e", "e2e", "e3e"> {
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>& p, const T* q) noexcept {
         const vec3<T> d = linear3::apply(placement.R, p.u);
         return {placement.R, {placement.t[0] + q[0] * d[0], placement.t[1] + q[0] * d[1], placement.t[2] + q[0] * d[2]}};
+    }
+    static constexpr linear3::shape aligned_shape = linear3::identity;
+    template <class T>
+    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>& p, const T* q) noexcept {
+        return {joint_detail::identity3<T>(), {t[0] + q[0] * p.u[0], t[1] + q[0] * p.u[1], t[2] + q[0] * p.u[2]}};
     }
 };
 
@@ -201,6 +258,11 @@ struct fixed {
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T*) noexcept {
         return placement;
+    }
+    static constexpr linear3::shape aligned_shape = linear3::identity;
+    template <class T>
+    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T*) noexcept {
+        return {joint_detail::identity3<T>(), t};
     }
 };
 
@@ -222,6 +284,12 @@ struct floating {
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T* q) noexcept {
         const motor_map<T> J = map_of(motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]});
         return {joint_detail::multiply(placement.R, J.R), linear3::add(linear3::apply(placement.R, J.t), placement.t)};
+    }
+    static constexpr linear3::shape aligned_shape = linear3::dense;
+    template <class T>
+    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T* q) noexcept {
+        const motor_map<T> J = map_of(motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]});
+        return {J.R, linear3::add(J.t, t)};
     }
 };
 
@@ -269,6 +337,35 @@ template <class J>
 inline constexpr bool is_mimic = false;
 template <class J, std::size_t M>
 inline constexpr bool is_mimic<mimic<J, M>> = true;
+
+// A joint J whose frame is aligned with its parent's: its placement is a pure translation t (checked
+// by make_link: not_aligned), so the body's map is J's motion alone moved by t (aligned_motion) and
+// its rotation has the shape aligned_shape (linear3.hpp), which the algorithms' transforms use.
+// A mimic joint follows an aligned one as mimic<aligned<J>, M>.
+template <class J>
+struct aligned : J {
+    static_assert(!is_mimic<J>, "ctga::chains::aligned: for a mimic joint write mimic<aligned<J>, Master>");
+    static constexpr linear3::shape shape = J::aligned_shape;
+    template <class T>
+    static constexpr motor_map<T> motion(const motor_map<T>& placement, const typename J::template parameters<T>& p,
+                                         const T* q) noexcept {
+        return J::aligned_motion(placement.t, p, q);
+    }
+};
+template <class J>
+inline constexpr bool is_aligned = false;
+template <class J>
+inline constexpr bool is_aligned<aligned<J>> = true;
+template <class J, std::size_t M>
+inline constexpr bool is_aligned<mimic<J, M>> = is_aligned<J>;
+
+// The shape of R in a body's map placement ∘ motion(q) (linear3.hpp): dense unless the joint is aligned.
+template <class J>
+inline constexpr linear3::shape map_shape = linear3::dense;
+template <class J>
+inline constexpr linear3::shape map_shape<aligned<J>> = aligned<J>::shape;
+template <class J, std::size_t M>
+inline constexpr linear3::shape map_shape<mimic<J, M>> = map_shape<J>;
 
 // Whether a joint moves its body relative to the parent: it has velocity numbers, or it mimics.
 template <class J>

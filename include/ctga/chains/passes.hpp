@@ -91,9 +91,9 @@ CTGA_ALWAYS_INLINE constexpr motor_map<T> joint_map(const model<Tree, T>& m, con
 // The world's acceleration in Featherstone's gravity trick (§5.3) is a pure translation, −g (or 0
 // for the true accelerations of forward kinematics): seen from a body on the world with map X
 // it is (0, Rᵀ(−g)) (X⁻¹ (0, a) = (Rᵀ 0, Rᵀ(a − t × 0))), 9m 6a instead of a screw's 24m 18a.
-template <class T>
+template <linear3::shape S = linear3::dense, class T>
 CTGA_ALWAYS_INLINE constexpr screw<T> world_acceleration(const motor_map<T>& X, const vec3<T>& a) noexcept {
-    const vec3<T> r = linear3::apply_transposed(X.R, a);
+    const vec3<T> r = linear3::apply_transposed<S>(X.R, a);
     return screw<T>{T(0), T(0), T(0), r[0], r[1], r[2]};
 }
 template <class T>
@@ -122,32 +122,33 @@ constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, con
         const std::size_t i = b.i;
         const auto& L = b.link(m);
         const motor_map<T> X = J::motion(L.placement, L.joint, q.data() + b.q_src);  // stored in k.X after the body's work
+        constexpr linear3::shape S = map_shape<J>;
         if constexpr (!Poses) {
         } else if constexpr (B::root) {
             k.pose[i] = X;
         } else {
-            k.pose[i] = compose(k.pose[b.p], X);
+            k.pose[i] = compose<S>(k.pose[b.p], X);
         }
         if constexpr (What != pass::poses) {
             const std::size_t o = b.v_src;
             if constexpr (!moves<J>) {
                 if constexpr (B::root) {
                     k.v[i] = screw<T>{};
-                    if constexpr (What == pass::accelerations) k.a[i] = world_acceleration(X, a_world);
+                    if constexpr (What == pass::accelerations) k.a[i] = world_acceleration<S>(X, a_world);
                 } else {
-                    k.v[i] = transform_inverse(X, k.v[b.p]);
-                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse(X, k.a[b.p]);
+                    k.v[i] = transform_inverse<S>(X, k.v[b.p]);
+                    if constexpr (What == pass::accelerations) k.a[i] = transform_inverse<S>(X, k.a[b.p]);
                 }
             } else {
                 const auto vJ = joint_screw<J>(L.joint, qd + o);
                 if constexpr (B::root) {
                     k.v[i] = vJ;  // the world does not move
                     if constexpr (What == pass::accelerations)
-                        k.a[i] = world_acceleration(X, a_world) + joint_screw<J>(L.joint, qdd + o);
+                        k.a[i] = world_acceleration<S>(X, a_world) + joint_screw<J>(L.joint, qdd + o);
                 } else {
-                    k.v[i] = transform_inverse(X, k.v[b.p]) + vJ;
+                    k.v[i] = transform_inverse<S>(X, k.v[b.p]) + vJ;
                     if constexpr (What == pass::accelerations)
-                        k.a[i] = transform_inverse(X, k.a[b.p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
+                        k.a[i] = transform_inverse<S>(X, k.a[b.p]) + joint_screw<J>(L.joint, qdd + o) + bracket(k.v[i], vJ);
                 }
             }
         }

@@ -45,7 +45,7 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
             [&]<std::size_t... K>(std::index_sequence<K...>) {
                 ((tau[body.v_own + K] = pairing(f[i], J::template subspace<K, T>(L.joint))), ...);
             }(std::make_index_sequence<J::nv>{});
-        if constexpr (!B::root) f[body.p] = f[body.p] + transform(k.X[i], f[i]);
+        if constexpr (!B::root) f[body.p] = f[body.p] + transform<map_shape<J>>(k.X[i], f[i]);
     });
     // a mimic joint's torque r f_i(S_i) goes to its master (τ = Gᵀ τ_all, joints.hpp); f_i is final
     // once body i has passed it on

@@ -243,9 +243,10 @@ CTGA_ALWAYS_INLINE constexpr auto body_links(const model<Tree, T>& m) noexcept {
         return std::tuple{run_detail::kind_links<Tree, T, C>(m)...};
     }(std::make_index_sequence<run_detail::kinds<Tree>::count>{});
 }
-// f(body handle) for body i given at run time, compiled for its kind.
+// f(body handle) for body i given at run time, compiled for its kind (links: body_links(m) of a
+// model<Tree, T>).
 template <class Tree, class T, class Links, class F>
-CTGA_ALWAYS_INLINE constexpr void visit_body(const model<Tree, T>&, const Links& links, std::size_t i, F&& f) {
+CTGA_ALWAYS_INLINE constexpr void visit_body(const Links& links, std::size_t i, F&& f) {
     using K = run_detail::kinds<Tree>;
     [&]<std::size_t... C>(std::index_sequence<C...>) CTGA_INLINE_LAMBDA {
         (void)((K::kind[i] == C ? (run_detail::visit_as_kind<Tree, C, T>(f, i, std::get<C>(links)[K::slot[i]]), true) : false) || ...);
@@ -262,9 +263,9 @@ CTGA_ALWAYS_INLINE constexpr void visit_segment(const model<Tree, T>& m, F& f) {
         // each body's parameters (the model keeps them in a tuple, one type per kind)
         const auto links = body_links(m);
         if constexpr (Forward)
-            for (std::size_t i = 0; i < Tree::size; ++i) visit_body(m, links, i, f);
+            for (std::size_t i = 0; i < Tree::size; ++i) visit_body<Tree, T>(links, i, f);
         else
-            for (std::size_t i = Tree::size; i-- > 0;) visit_body(m, links, i, f);
+            for (std::size_t i = Tree::size; i-- > 0;) visit_body<Tree, T>(links, i, f);
     } else if constexpr (S.repeats == 1) {
         f(single_body<Tree, S.first>{});
     } else {

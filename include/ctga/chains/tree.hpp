@@ -297,6 +297,16 @@ constexpr checked<motor_map<T>> placement_map(const motor<T>& g) noexcept {
     if (!r) return {{}, r.error};
     return {map_of(*r), error_code::none};
 }
+// R = 1 to a few roundings (an aligned joint's placement, joints.hpp).
+template <class T>
+constexpr bool identity_rotation(const mat3<T>& R) noexcept {
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+            const T d = R[i][j] - (i == j ? T(1) : T(0));
+            if (!((d < T(0) ? -d : d) <= T(64) * std::numeric_limits<T>::epsilon())) return false;
+        }
+    return true;
+}
 }  // namespace tree_detail
 
 // One body's parameters from its placement motor and its checked mass properties; then, for a
@@ -307,7 +317,7 @@ constexpr checked<motor_map<T>> placement_map(const motor<T>& g) noexcept {
 //   make_link<revolute_about>(placement, mass, axis)
 //   make_link<mimic<prismatic_y, 7>>(placement, mass, coupling<T>{-1.0, 0.01})
 // Reported: non_finite (a NaN or an infinity), not_a_motor (a placement that is not a unit motor
-// up to rounding), not_a_unit_axis (‖u‖ ≠ 1 beyond rounding), and the mass properties' own errors.
+// up to rounding), not_aligned (an aligned joint's placement that turns), not_a_unit_axis (‖u‖ ≠ 1 beyond rounding), and the mass properties' own errors.
 template <joint Joint, class T, class... Extra>
 [[nodiscard]] constexpr checked<link_parameters<Joint, T>> make_link(const motor<T>& placement,
                                                                      const checked<mass_properties<T>>& mass,
@@ -327,6 +337,8 @@ template <joint Joint, class T, class... Extra>
                       "ctga::chains::make_link: the axis is a vec3 of the model's scalar type");
     const checked<motor_map<T>> X = tree_detail::placement_map(placement);
     if (!X) return {{}, X.error};
+    if constexpr (is_aligned<Joint>)
+        if (!tree_detail::identity_rotation(X->R)) return {{}, error_code::not_aligned};
     if (!mass) return {{}, mass.error};
     link_parameters<Joint, T> out;
     out.placement = *X;

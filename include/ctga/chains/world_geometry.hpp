@@ -42,7 +42,7 @@ constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree,
         const auto& L = b.link(m);
         const motor_map<T> X = J::motion(L.placement, L.joint, q.data() + b.q_src);
         if constexpr (B::root) g.pose[i] = X;
-        else g.pose[i] = compose(g.pose[b.p], X);
+        else g.pose[i] = compose<map_shape<J>>(g.pose[b.p], X);
         [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
             ((g.S[b.v_own + K] = frame_detail::moved_out(g.pose[i], J::template subspace<K, T>(L.joint))), ...);
         }(std::make_index_sequence<J::nv>{});

@@ -138,25 +138,25 @@ template <std::size_t Null = 6, class T>
 }
 
 namespace articulated_detail {
-// Σ_k a[k] b[k] over k ≠ Skip (Skip = 3: all three).
-template <std::size_t Skip, class T>
-CTGA_ALWAYS_INLINE constexpr T dot_but(const vec3<T>& a, const vec3<T>& b) noexcept {
-    if constexpr (Skip == 0) return a[1] * b[1] + a[2] * b[2];
-    else if constexpr (Skip == 1) return a[0] * b[0] + a[2] * b[2];
-    else if constexpr (Skip == 2) return a[0] * b[0] + a[1] * b[1];
-    else return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-}
-// R X Rᵀ for a 3×3 block X whose row RowSkip and column ColSkip are zero (3: none).
-template <std::size_t RowSkip, std::size_t ColSkip, class T>
+// R X Rᵀ for R of shape S (linear3.hpp) and a 3×3 block X whose row RowSkip and column ColSkip
+// are zero (3: none): each dot product skips the entries either side knows to be zero.
+template <std::size_t RowSkip, std::size_t ColSkip, linear3::shape S, class T>
 CTGA_ALWAYS_INLINE constexpr mat3<T> rotate_block(const mat3<T>& R, const mat3<T>& X) noexcept {
-    mat3<T> XRt{};  // X Rᵀ: entry (k, j) = row k of X · row j of R
+    constexpr linear3::shape by_col = linear3::with_zero_column(S, ColSkip), by_row = linear3::with_zero_column(S, RowSkip);
+    mat3<T> XRt{};  // X Rᵀ: entry (k, j) = row j of R · row k of X
     for (std::size_t k = 0; k < 3; ++k)
-        if (k != RowSkip)
-            for (std::size_t j = 0; j < 3; ++j) XRt[k][j] = dot_but<ColSkip>(X[k], R[j]);
-    mat3<T> out{};  // R (X Rᵀ): entry (i, j) = Σ_k R[i][k] (X Rᵀ)[k][j]
-    for (std::size_t i = 0; i < 3; ++i)
-        for (std::size_t j = 0; j < 3; ++j)
-            out[i][j] = dot_but<RowSkip>(R[i], vec3<T>{XRt[0][j], XRt[1][j], XRt[2][j]});
+        if (k != RowSkip) {
+            XRt[k][0] = linear3::row_dot<by_col, 0>(R, X[k]);
+            XRt[k][1] = linear3::row_dot<by_col, 1>(R, X[k]);
+            XRt[k][2] = linear3::row_dot<by_col, 2>(R, X[k]);
+        }
+    mat3<T> out{};  // R (X Rᵀ): entry (i, j) = row i of R · column j of X Rᵀ
+    for (std::size_t j = 0; j < 3; ++j) {
+        const vec3<T> column{XRt[0][j], XRt[1][j], XRt[2][j]};
+        out[0][j] = linear3::row_dot<by_row, 0>(R, column);
+        out[1][j] = linear3::row_dot<by_row, 1>(R, column);
+        out[2][j] = linear3::row_dot<by_row, 2>(R, column);
+    }
     return out;
 }
 }  // namespace articulated_detail
@@ -167,8 +167,9 @@ CTGA_ALWAYS_INLINE constexpr mat3<T> rotate_block(const mat3<T>& R, const mat3<T
 //   C'' = C',  B'' = B' + Y,  A'' = A' + X + Xᵀ − Y T
 // ([[1, T], [0, 1]] [[A', B'], [B'ᵀ, C']] [[1, 0], [−T, 1]]; Y T = T C' T is symmetric, and row
 // i of −Y T is t × (row i of Y)). 189m 150a for a full N; with a zero row and column Null
-// (minus_joint after an axis joint) the rotations skip it: 159m for a revolute joint's N.
-template <std::size_t Null = 6, class T>
+// (minus_joint after an axis joint) the rotations skip it: 159m for a revolute joint's N; with R
+// of shape S (an aligned joint's turn about a coordinate axis) they skip its zeros too.
+template <std::size_t Null = 6, linear3::shape S = linear3::dense, class T>
 CTGA_SCALAR_CODE [[nodiscard]] constexpr articulated_inertia<T> transform(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
     using linear3::cross;
     constexpr std::size_t skip_w = Null < 3 ? Null : 3, skip_v = Null >= 3 && Null < 6 ? Null - 3 : 3;
@@ -177,9 +178,9 @@ CTGA_SCALAR_CODE [[nodiscard]] constexpr articulated_inertia<T> transform(const 
     mat3<T> A{}, B{}, C{};
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) A[i][j] = N(i, j), B[i][j] = N(i, j + 3), C[i][j] = N(i + 3, j + 3);
-    const mat3<T> A1 = articulated_detail::rotate_block<skip_w, skip_w>(R, A);
-    const mat3<T> B1 = articulated_detail::rotate_block<skip_w, skip_v>(R, B);
-    const mat3<T> C1 = articulated_detail::rotate_block<skip_v, skip_v>(R, C);
+    const mat3<T> A1 = articulated_detail::rotate_block<skip_w, skip_w, S>(R, A);
+    const mat3<T> B1 = articulated_detail::rotate_block<skip_w, skip_v, S>(R, B);
+    const mat3<T> C1 = articulated_detail::rotate_block<skip_v, skip_v, S>(R, C);
     // Y = T C' column by column (C' symmetric: its columns are its rows); B'' = B' + Y
     mat3<T> Y{};
     for (std::size_t j = 0; j < 3; ++j) {

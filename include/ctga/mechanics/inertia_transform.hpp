@@ -38,21 +38,23 @@ struct moved_inertia {
 // (R I_o Rᵀ)_ij = R_i·(I_o R_j) for the rows R_i of R; R is a rotation, so tr(R I_o Rᵀ) = tr I_o
 // gives the last diagonal entry and only I_o R_0 and I_o R_1 are formed (54m 50a, 3 halvings).
 // The statement order (R I_o Rᵀ first, then h' and the parallel-axis terms) keeps the live values
-// few: other orders measured 10–25 more instructions (spills) with g++ 12.
-template <class T>
+// few: other orders measured 10–25 more instructions (spills) with g++ 12. With R of shape S
+// (linear3.hpp: an aligned joint's turn about a coordinate axis) every product with a row of R
+// skips its zeros.
+template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr moved_inertia<T> move_inertia(const motor_map<T>& G, const T& m, const vec3<T>& h,
                                                                          const mat3<T>& Io) noexcept {
-    using linear3::dot;
+    using linear3::row_dot;
     const mat3<T>& R = G.R;
     const vec3<T>& t = G.t;
-    // R I_o Rᵀ, column by column
-    const vec3<T> a0 = linear3::apply(Io, R[0]);
-    const T r00 = dot(R[0], a0), r20 = dot(R[2], a0);
-    const vec3<T> a1 = linear3::apply(Io, R[1]);
-    const T r01 = dot(R[0], a1), r11 = dot(R[1], a1), r21 = dot(R[2], a1);
+    // R I_o Rᵀ, column by column (I_o R_i: row i of R dotted with each row of I_o, I_o symmetric)
+    const vec3<T> a0{row_dot<S, 0>(R, Io[0]), row_dot<S, 0>(R, Io[1]), row_dot<S, 0>(R, Io[2])};
+    const T r00 = row_dot<S, 0>(R, a0), r20 = row_dot<S, 2>(R, a0);
+    const vec3<T> a1{row_dot<S, 1>(R, Io[0]), row_dot<S, 1>(R, Io[1]), row_dot<S, 1>(R, Io[2])};
+    const T r01 = row_dot<S, 0>(R, a1), r11 = row_dot<S, 1>(R, a1), r21 = row_dot<S, 2>(R, a1);
     const T r22 = Io[2][2] + (Io[0][0] - r00) + (Io[1][1] - r11);  // the trace is invariant
     // h' and the parallel-axis terms
-    const vec3<T> y = linear3::apply(R, h);
+    const vec3<T> y = linear3::apply<S>(R, h);
     const vec3<T> h2{y[0] + m * t[0], y[1] + m * t[1], y[2] + m * t[2]};
     const vec3<T> u{y[0] + h2[0], y[1] + h2[1], y[2] + h2[2]};
     const T xy = r01 - (t[0] * u[1] + u[0] * t[1]) / T(2);
@@ -148,10 +150,10 @@ template <class T>
 }
 
 // (g ḡ) N (g ḡ)* on the ten parameters (transform_detail::move_inertia, 54m 50a).
-template <class T>
+template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr body_inertia<T> transform(const motor_map<T>& G, const body_inertia<T>& N) noexcept {
     using s = typename body_inertia<T>::scalar;
-    const transform_detail::moved_inertia<T> n = transform_detail::move_inertia(G, N.mass(), N.first_moment(), N.inertia_o());
+    const transform_detail::moved_inertia<T> n = transform_detail::move_inertia<S>(G, N.mass(), N.first_moment(), N.inertia_o());
     return {N.m, s{n.h[0]}, s{n.h[1]}, s{n.h[2]}, s{n.xx}, s{n.yy}, s{n.zz}, s{n.xy}, s{n.xz}, s{n.yz}};
 }
 

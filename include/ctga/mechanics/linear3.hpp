@@ -4,6 +4,8 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
+#include <type_traits>
 
 namespace ctga {
 
@@ -30,15 +32,82 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> add(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
 }
-template <class T>
-[[nodiscard]] constexpr vec3<T> apply(const mat3<T>& m, const vec3<T>& x) noexcept {
-    return {dot(m[0], x), dot(m[1], x), dot(m[2], x)};
+// Which entries of a 3×3 matrix are known at compile time to be 0 or 1 (a shape): the rotation of
+// a joint whose frame is aligned with its parent's is a turn about one coordinate axis, with five
+// such entries (chains/joints.hpp, aligned). Applying the matrix skips the zeros and does not
+// multiply by the ones; the dense shape is the plain product.
+enum class entry : unsigned char { zero, one, any };
+struct shape {
+    std::array<entry, 9> e;  // row-major
+    [[nodiscard]] constexpr entry at(int row, int col) const noexcept { return e[static_cast<std::size_t>(3 * row + col)]; }
+};
+inline constexpr shape dense{{entry::any, entry::any, entry::any, entry::any, entry::any, entry::any, entry::any, entry::any, entry::any}};
+inline constexpr shape identity{{entry::one, entry::zero, entry::zero, entry::zero, entry::one, entry::zero, entry::zero, entry::zero, entry::one}};
+
+namespace shape_detail {
+struct nothing {};  // no term summed yet
+// Σ_c m(Row, c) x_c (m(c, Row) when Transposed) from column C on, left to right, over the entries S
+// does not know to be 0; an entry known to be 1 adds x_c. (All zero: 0.)
+template <shape S, bool Transposed, int Row, int C, class T, class Sum>
+constexpr T row_sum(const mat3<T>& m, const vec3<T>& x, const Sum& sum) noexcept {
+    if constexpr (C == 3) {
+        if constexpr (std::is_same_v<Sum, nothing>) return T(0);
+        else return sum;
+    } else {
+        constexpr entry e = Transposed ? S.at(C, Row) : S.at(Row, C);
+        if constexpr (e == entry::zero) {
+            return row_sum<S, Transposed, Row, C + 1>(m, x, sum);
+        } else {
+            const T term = [&] {
+                if constexpr (e == entry::one) return x[C];
+                else return (Transposed ? m[C][Row] : m[Row][C]) * x[C];
+            }();
+            if constexpr (std::is_same_v<Sum, nothing>) return row_sum<S, Transposed, Row, C + 1>(m, x, term);
+            else return row_sum<S, Transposed, Row, C + 1>(m, x, T(sum + term));
+        }
+    }
 }
-template <class T>
+}  // namespace shape_detail
+
+// The flops of m x for m of shape S: per row, a multiplication for each entry that is neither 0
+// nor 1 and an addition for each non-zero entry but the first (dense: 15; a turn about a
+// coordinate axis: 6; the identity: 0).
+[[nodiscard]] constexpr std::size_t apply_cost(const shape& S) noexcept {
+    std::size_t c = 0;
+    for (int r = 0; r < 3; ++r) {
+        std::size_t nonzero = 0;
+        for (int j = 0; j < 3; ++j) {
+            nonzero += S.at(r, j) != entry::zero ? 1 : 0;
+            c += S.at(r, j) == entry::any ? 1 : 0;
+        }
+        c += nonzero > 0 ? nonzero - 1 : 0;
+    }
+    return c;
+}
+
+// Row Row of m (shape S) dotted with x.
+template <shape S, int Row, class T>
+[[nodiscard]] constexpr T row_dot(const mat3<T>& m, const vec3<T>& x) noexcept {
+    return shape_detail::row_sum<S, false, Row, 0>(m, x, shape_detail::nothing{});
+}
+// S with column Col known to be zero too (Col = 3: S): a product with a vector whose entry Col is a
+// structural zero.
+[[nodiscard]] constexpr shape with_zero_column(shape S, std::size_t col) noexcept {
+    if (col < 3)
+        for (std::size_t r = 0; r < 3; ++r) S.e[3 * r + col] = entry::zero;
+    return S;
+}
+
+// m x and mᵀ x for m of shape S (dense: 9m 6a; a turn about a coordinate axis: 4m 2a).
+template <shape S = dense, class T>
+[[nodiscard]] constexpr vec3<T> apply(const mat3<T>& m, const vec3<T>& x) noexcept {
+    using shape_detail::row_sum, shape_detail::nothing;
+    return {row_sum<S, false, 0, 0>(m, x, nothing{}), row_sum<S, false, 1, 0>(m, x, nothing{}), row_sum<S, false, 2, 0>(m, x, nothing{})};
+}
+template <shape S = dense, class T>
 [[nodiscard]] constexpr vec3<T> apply_transposed(const mat3<T>& m, const vec3<T>& x) noexcept {
-    vec3<T> out{};
-    for (int j = 0; j < 3; ++j) out[j] = m[0][j] * x[0] + m[1][j] * x[1] + m[2][j] * x[2];
-    return out;
+    using shape_detail::row_sum, shape_detail::nothing;
+    return {row_sum<S, true, 0, 0>(m, x, nothing{}), row_sum<S, true, 1, 0>(m, x, nothing{}), row_sum<S, true, 2, 0>(m, x, nothing{})};
 }
 // R S Rᵀ for a symmetric S, computing the upper triangle and mirroring it (45m 30a).
 template <class T>

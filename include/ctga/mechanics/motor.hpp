@@ -199,12 +199,12 @@ template <class T>
 }
 
 // The map of g_A g_B (B's frame placed in A's, A placed in the world): R = R_A R_B,
-// t = R_A t_B + t_A, 36m 30a.
-template <class T>
+// t = R_A t_B + t_A, 36m 30a (row i of R_A R_B is R_Bᵀ applied to row i of R_A: with R_B of shape
+// S, linear3.hpp, a turn about a coordinate axis, 21m 15a).
+template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] constexpr motor_map<T> compose(const motor_map<T>& A, const motor_map<T>& B) noexcept {
     motor_map<T> out;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) out.R[i][j] = A.R[i][0] * B.R[0][j] + A.R[i][1] * B.R[1][j] + A.R[i][2] * B.R[2][j];
+    for (int i = 0; i < 3; ++i) out.R[i] = linear3::apply_transposed<S>(B.R, A.R[i]);
     out.t = linear3::add(linear3::apply(A.R, B.t), A.t);
     return out;
 }
@@ -221,38 +221,39 @@ template <class T>
 
 // ---- the action on screws and co-screws (§2) ---------------------------------------------
 
-// g s g* = H s: ω' = R ω, v' = R v + t × ω'.
-template <class T>
+// g s g* = H s: ω' = R ω, v' = R v + t × ω'. (S: the shape of R when some of its entries are known
+// to be 0 or 1, linear3.hpp; a joint aligned with its parent, chains/joints.hpp.)
+template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> transform(const motor_map<T>& G, const screw<T>& s) noexcept {
-    const vec3<T> w = linear3::apply(G.R, vec3<T>{s[0], s[1], s[2]});
-    const vec3<T> v = linear3::add(linear3::apply(G.R, vec3<T>{s[3], s[4], s[5]}), linear3::cross(G.t, w));
+    const vec3<T> w = linear3::apply<S>(G.R, vec3<T>{s[0], s[1], s[2]});
+    const vec3<T> v = linear3::add(linear3::apply<S>(G.R, vec3<T>{s[3], s[4], s[5]}), linear3::cross(G.t, w));
     return screw<T>{w[0], w[1], w[2], v[0], v[1], v[2]};
 }
 
 // ḡ P ḡ* = H⁻ᵀ P: p' = R p, l' = R l + t × p'.
-template <class T>
+template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr coscrew<T> transform(const motor_map<T>& G, const coscrew<T>& P) noexcept {
-    const vec3<T> p = linear3::apply(G.R, vec3<T>{P[3], P[4], P[5]});
-    const vec3<T> l = linear3::add(linear3::apply(G.R, vec3<T>{P[0], P[1], P[2]}), linear3::cross(G.t, p));
+    const vec3<T> p = linear3::apply<S>(G.R, vec3<T>{P[3], P[4], P[5]});
+    const vec3<T> l = linear3::add(linear3::apply<S>(G.R, vec3<T>{P[0], P[1], P[2]}), linear3::cross(G.t, p));
     return coscrew<T>{l[0], l[1], l[2], p[0], p[1], p[2]};
 }
 
 // The same actions by g⁻¹ = g*, without forming its map (Rᵀ applied directly), 24m 18a each:
 // on a screw H⁻¹ s: ω' = Rᵀ ω, v' = Rᵀ (v − t × ω); on a co-screw Hᵀ P: l' = Rᵀ (l − t × p), p' = Rᵀ p.
-template <class T>
+template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr screw<T> transform_inverse(const motor_map<T>& G, const screw<T>& s) noexcept {
     const vec3<T> w{s[0], s[1], s[2]};
     const vec3<T> tw = linear3::cross(G.t, w);
-    const vec3<T> w2 = linear3::apply_transposed(G.R, w);
-    const vec3<T> v2 = linear3::apply_transposed(G.R, vec3<T>{s[3] - tw[0], s[4] - tw[1], s[5] - tw[2]});
+    const vec3<T> w2 = linear3::apply_transposed<S>(G.R, w);
+    const vec3<T> v2 = linear3::apply_transposed<S>(G.R, vec3<T>{s[3] - tw[0], s[4] - tw[1], s[5] - tw[2]});
     return screw<T>{w2[0], w2[1], w2[2], v2[0], v2[1], v2[2]};
 }
-template <class T>
+template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr coscrew<T> transform_inverse(const motor_map<T>& G, const coscrew<T>& P) noexcept {
     const vec3<T> p{P[3], P[4], P[5]};
     const vec3<T> tp = linear3::cross(G.t, p);
-    const vec3<T> l2 = linear3::apply_transposed(G.R, vec3<T>{P[0] - tp[0], P[1] - tp[1], P[2] - tp[2]});
-    const vec3<T> p2 = linear3::apply_transposed(G.R, p);
+    const vec3<T> l2 = linear3::apply_transposed<S>(G.R, vec3<T>{P[0] - tp[0], P[1] - tp[1], P[2] - tp[2]});
+    const vec3<T> p2 = linear3::apply_transposed<S>(G.R, p);
     return coscrew<T>{l2[0], l2[1], l2[2], p2[0], p2[1], p2[2]};
 }
 

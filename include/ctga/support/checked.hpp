@@ -33,6 +33,7 @@ enum class error_code : unsigned char {
     not_a_motor,            // g g* = 1 fails beyond rounding (or the rotor part is zero)
     not_a_rigid_inertia,    // a 6×6 inertia without the form [[I, m Ĉ], [m Ĉᵀ, m 1]] of §2
     not_a_unit_axis,        // a joint axis u with ‖u‖ ≠ 1 beyond rounding
+    not_aligned,            // an aligned joint's placement turns (chains::aligned: a pure translation expected)
     zero_direction,         // an axis or direction given as the zero vector
     massless_subtree,       // a moving joint that carries no mass: H singular, ABA's D = 0 (chains::massless_subtree)
     unknown_frame,          // a frame name the tree does not have (chains::tree::find_frame)
@@ -54,6 +55,8 @@ enum class error_code : unsigned char {
         case error_code::not_a_rigid_inertia:
             return "ctga: not a rigid body's inertia (mass block m*1, coupling block m*C antisymmetric)";
         case error_code::not_a_unit_axis: return "ctga: a joint axis must be a unit vector";
+        case error_code::not_aligned:
+            return "ctga: an aligned joint's placement must be a pure translation (its rotation is not the identity)";
         case error_code::massless_subtree:
             return "ctga: a moving joint carries no mass (its whole subtree is massless): the mass matrix is singular";
         case error_code::unknown_frame: return "ctga: the tree has no frame of this name";

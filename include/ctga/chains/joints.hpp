@@ -25,10 +25,10 @@
 // placement ∘ motion(q), a motor_map (R, t) (motor.hpp). For an aligned joint R is the joint's own
 // rotation, whose shape (linear3.hpp) the type knows: a turn about coordinate axis k has
 // R_kk = 1 and four more zeros, so a screw or co-screw moves across the joint with 4m 2a per
-// 3-vector instead of 9m 6a (Featherstone's X_J X_T split, §4.1), and the map costs no product. The floating joint's velocity numbers
-// are the body's screw relative to the joint frame in body coordinates, (ω, v), and its
-// configuration the eight coefficients of the motor in ctga::motor's order; it moves as
-// dg/dt = ½ g s (§3, body-frame velocity).
+// 3-vector instead of 9m 6a (Featherstone's X_J X_T split, §4.1), and the map costs no product.
+// The floating joint's velocity numbers are the body's screw relative to the joint frame in body
+// coordinates, (ω, v), and its configuration the eight coefficients of the motor in ctga::motor's
+// order; it moves as dg/dt = ½ g s (§3, body-frame velocity).
 #pragma once
 
 #include <cmath>

@@ -317,7 +317,8 @@ constexpr bool identity_rotation(const mat3<T>& R) noexcept {
 //   make_link<revolute_about>(placement, mass, axis)
 //   make_link<mimic<prismatic_y, 7>>(placement, mass, coupling<T>{-1.0, 0.01})
 // Reported: non_finite (a NaN or an infinity), not_a_motor (a placement that is not a unit motor
-// up to rounding), not_aligned (an aligned joint's placement that turns), not_a_unit_axis (‖u‖ ≠ 1 beyond rounding), and the mass properties' own errors.
+// up to rounding), not_aligned (an aligned joint's placement that turns), not_a_unit_axis
+// (‖u‖ ≠ 1 beyond rounding), and the mass properties' own errors.
 template <joint Joint, class T, class... Extra>
 [[nodiscard]] constexpr checked<link_parameters<Joint, T>> make_link(const motor<T>& placement,
                                                                      const checked<mass_properties<T>>& mass,

@@ -26,7 +26,7 @@
 
 #include "chains_kernels.hpp"
 #include "support/dual.hpp"
-#include "support/model_cast.hpp"
+#include <ctga/chains/model_cast.hpp>
 
 namespace bench::chains {
 
@@ -117,7 +117,7 @@ auto fd_partials(const ch::model<Tree>& m, const state<Tree>& s) {
 template <class Tree>
 struct derivative_fixture {
     fixture<Tree> f;
-    ch::model<Tree, ctga_test::dual<Tree::nv>> md = ctga_test::model_cast<ctga_test::dual<Tree::nv>>(f.m);
+    ch::model<Tree, ctga_test::dual<Tree::nv>> md = ctga::chains::model_cast<ctga_test::dual<Tree::nv>>(f.m);
 };
 
 template <dynamics A, differentiation I, class Tree>
@@ -146,7 +146,7 @@ double entry_of(const R& r, std::size_t w, std::size_t i, std::size_t j) {
 template <dynamics A, differentiation I, class Tree>
 double derivative_error(const derivative_fixture<Tree>& d) {
     using L = ctga_test::dual<Tree::nv, long double>;
-    const auto ml = ctga_test::model_cast<L>(d.f.m);
+    const auto ml = ctga::chains::model_cast<L>(d.f.m);
     double worst = 0;
     for (std::size_t k = 0; k < 8; ++k) {
         const auto ref = dual_partials<A == dynamics::inverse ? A : dynamics::forward>(ml, d.f.states[k]);

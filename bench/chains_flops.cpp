@@ -12,7 +12,7 @@
 
 #include "chain_models.hpp"
 #include "counting_scalar.hpp"
-#include "support/model_cast.hpp"
+#include <ctga/chains/model_cast.hpp>
 
 namespace {
 
@@ -29,7 +29,7 @@ void count(const char* tree, const char* algorithm, F&& f) {
 
 template <class Tree, std::size_t N>
 void run(const char* name, const description<N>& d) {
-    const auto m = ctga_test::model_cast<real>(ctga_model<Tree>(d));
+    const auto m = ctga::chains::model_cast<real>(ctga_model<Tree>(d));
     const state<Tree> s = random_states<Tree>(71)[0];
     ch::configuration<Tree, real> q;
     ch::joint_vector<Tree, real> qd, qdd, tau;

@@ -23,7 +23,7 @@
 #include "support/dual.hpp"
 #include "support/dual_partials.hpp"
 #include "support/featherstone_derivatives.hpp"
-#include "support/model_cast.hpp"
+#include <ctga/chains/model_cast.hpp>
 #include "support/parts.hpp"
 #include "support/random_structure.hpp"
 

@@ -15,7 +15,7 @@
 #include <ctga/chains/tree.hpp>
 
 #include "support/dual.hpp"
-#include "support/model_cast.hpp"
+#include <ctga/chains/model_cast.hpp>
 
 namespace ctga::test {
 
@@ -31,7 +31,7 @@ auto dual_partials(const ctga::chains::model<Tree>& m, const ctga::chains::confi
     using Y = decltype(algorithm(std::declval<const ch::model<Tree, D>&>(), std::declval<const ch::configuration<Tree, D>&>(),
                                  std::declval<const ch::joint_vector<Tree, D>&>(), std::declval<const ch::joint_vector<Tree, D>&>()));
     constexpr std::size_t M = std::tuple_size_v<Y>;
-    const ch::model<Tree, D> md = ctga_test::model_cast<D>(m);
+    const ch::model<Tree, D> md = ctga::chains::model_cast<D>(m);
     std::array<std::array<std::array<double, Tree::nv>, M>, 3> out{};
     for (std::size_t wrt = 0; wrt < 3; ++wrt)
         for (std::size_t c0 = 0; c0 < Tree::nv; c0 += chunk) {

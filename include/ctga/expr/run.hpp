@@ -48,8 +48,13 @@ namespace ctga::expr {
 template <class T>
 constexpr T coefficient(const rational& c) {
     const std::int64_t n = c.num < 0 ? -c.num : c.num;
-    if (c.den == 1) return T(n);
-    if constexpr (requires(const T& a) { a / a; }) return T(n) / T(c.den);
+    // (a SIMD pack converts from a double, not from an integer whose value it might not keep)
+    const auto as_T = [](std::int64_t k) {
+        if constexpr (std::is_constructible_v<T, std::int64_t>) return T(k);
+        else return T(static_cast<double>(k));
+    };
+    if (c.den == 1) return as_T(n);
+    if constexpr (requires(const T& a) { a / a; }) return as_T(n) / as_T(c.den);
     else return T(static_cast<long double>(n) / static_cast<long double>(c.den));
 }
 

@@ -2,12 +2,14 @@
 // (Golub & Van Loan, Matrix Computations, §4.2): n³/6 multiply-adds, no pivoting (a positive
 // definite matrix needs none). For the mass matrix of a tree with mimic joints (chains/aba.hpp)
 // and the task-space quantities built from it. A matrix that is not positive definite, or a
-// non-finite entry, is reported (not_positive_definite, non_finite), never answered with a number.
+// non-finite entry, is reported (not_positive_definite, non_finite), never answered with a number;
+// for a pack of lanes (support/pack.hpp) such a lane's factor is NaN.
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
@@ -21,8 +23,14 @@ template <std::size_t N, class T>
     for (std::size_t j = 0; j < N; ++j) {
         T d = A[j][j];
         for (std::size_t k = 0; k < j; ++k) d -= L[j][k] * L[j][k];
-        if (!all_finite(d)) return {{}, error_code::non_finite};
-        if (!(d > T(0))) return {{}, error_code::not_positive_definite};
+        if constexpr (lane_wise<T>) {
+            // lane by lane: a lane that is not positive definite goes on with NaN (its results all
+            // NaN, reported by chains::batch_call); the others are factored
+            d = select(d > T(0), d, T(std::numeric_limits<double>::quiet_NaN()));
+        } else {
+            if (!all_finite(d)) return {{}, error_code::non_finite};
+            if (!(d > T(0))) return {{}, error_code::not_positive_definite};
+        }
         L[j][j] = math::sqrt(d);
         for (std::size_t i = j + 1; i < N; ++i) {
             T s = A[i][j];

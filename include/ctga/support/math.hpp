@@ -19,24 +19,30 @@ template <class... T>
     return (is_finite(x) && ...);
 }
 
+// A scalar type whose comparisons give a mask of lanes, not a bool (ctga::pack, pack.hpp): code
+// that would branch on a value chooses lane by lane with select(mask, a, b) instead.
+template <class T>
+concept lane_wise = requires(const T& a) { select(a > a, a, a); };
+
 namespace math {
 
 // √x: in constant evaluation Newton's iteration from above (monotone in exact arithmetic, stopped
 // when it no longer decreases; not always correctly rounded), at run time std::sqrt.
 template <class T>
 [[nodiscard]] constexpr T sqrt(const T& x) noexcept {
-    if (std::is_constant_evaluated()) {
-        if (!(x > T(0)) || !is_finite(x)) return x < T(0) ? std::numeric_limits<T>::quiet_NaN() : x;
-        T y = x > T(1) ? x : T(1);  // y ≥ √x
-        for (;;) {
-            const T next = (y + x / y) / T(2);
-            if (!(next < y)) return y;
-            y = next;
+    if constexpr (!lane_wise<T>) {
+        if (std::is_constant_evaluated()) {
+            if (!(x > T(0)) || !is_finite(x)) return x < T(0) ? std::numeric_limits<T>::quiet_NaN() : x;
+            T y = x > T(1) ? x : T(1);  // y ≥ √x
+            for (;;) {
+                const T next = (y + x / y) / T(2);
+                if (!(next < y)) return y;
+                y = next;
+            }
         }
-    } else {
-        using std::sqrt;
-        return sqrt(x);
     }
+    using std::sqrt;
+    return sqrt(x);
 }
 
 // cos x and sin x together: in constant evaluation x is reduced by the nearest multiple k of π/2,

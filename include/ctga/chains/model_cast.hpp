@@ -1,33 +1,43 @@
-// A tree's model with another scalar type (dual numbers for derivatives): every parameter
-// converted, U(x), a mimic joint's coupling included.
+// A tree's model in another scalar type: every parameter converted, U(x), a mimic joint's coupling
+// included. A pack type broadcasts the model to all its lanes (chains/batch.hpp: one robot, many
+// states); dual numbers carry derivatives (the tests' references).
+//
+//   const ch::model<Tree, ctga::pack<double, 8>> lanes = ch::model_cast<ctga::pack<double, 8>>(m);
+//
+// Nothing is checked again: the model was checked when it was made (make_link), and U(x) keeps
+// every value.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <utility>
 
-#include <ctga/chains/tree.hpp>
+#include "ctga/chains/tree.hpp"
 
-namespace ctga_test {
+namespace ctga::chains {
 
+namespace cast_detail {
 template <class U, class T, std::size_t N>
-std::array<U, N> cast_array(const std::array<T, N>& x) {
+constexpr std::array<U, N> cast_array(const std::array<T, N>& x) noexcept {
     std::array<U, N> out{};
     for (std::size_t k = 0; k < N; ++k) out[k] = U(x[k]);
     return out;
 }
 
 template <class U, class T>
-ctga::motor_map<U> cast_map(const ctga::motor_map<T>& G) {
-    ctga::motor_map<U> out;
+constexpr motor_map<U> cast_map(const motor_map<T>& G) noexcept {
+    motor_map<U> out;
     for (std::size_t r = 0; r < 3; ++r) out.R[r] = cast_array<U>(G.R[r]);
     out.t = cast_array<U>(G.t);
     return out;
 }
+}  // namespace cast_detail
 
 template <class U, class Tree, class T>
-ctga::chains::model<Tree, U> model_cast(const ctga::chains::model<Tree, T>& m) {
-    namespace ch = ctga::chains;
-    ch::model<Tree, U> out;
+[[nodiscard]] constexpr model<Tree, U> model_cast(const model<Tree, T>& m) noexcept {
+    using cast_detail::cast_array;
+    using cast_detail::cast_map;
+    model<Tree, U> out;
     out.gravity = cast_array<U>(m.gravity);
     for (std::size_t k = 0; k < Tree::frame_count; ++k) out.frames[k] = cast_map<U>(m.frames[k]);
     [&]<std::size_t... I>(std::index_sequence<I...>) {
@@ -36,15 +46,15 @@ ctga::chains::model<Tree, U> model_cast(const ctga::chains::model<Tree, T>& m) {
             const auto& a = m.template link<I>();
             auto& b = out.template link<I>();
             b.placement = cast_map<U>(a.placement);
-            using s = typename ctga::body_inertia<U>::scalar;
+            using s = typename body_inertia<U>::scalar;
             const auto& N = a.inertia;
             b.inertia = {s{U(N.m[0])},   s{U(N.hx[0])},  s{U(N.hy[0])},  s{U(N.hz[0])},  s{U(N.ixx[0])},
                          s{U(N.iyy[0])}, s{U(N.izz[0])}, s{U(N.ixy[0])}, s{U(N.ixz[0])}, s{U(N.iyz[0])}};
-            if constexpr (ch::is_mimic<J>) {
+            if constexpr (is_mimic<J>) {
                 b.joint.multiplier = U(a.joint.multiplier);
                 b.joint.offset = U(a.joint.offset);
-                if constexpr (ch::has_run_time_axis<J>) b.joint.joint.u = cast_array<U>(a.joint.joint.u);
-            } else if constexpr (ch::has_run_time_axis<J>) {
+                if constexpr (has_run_time_axis<J>) b.joint.joint.u = cast_array<U>(a.joint.joint.u);
+            } else if constexpr (has_run_time_axis<J>) {
                 b.joint.u = cast_array<U>(a.joint.u);
             }
         }(), ...);
@@ -52,4 +62,4 @@ ctga::chains::model<Tree, U> model_cast(const ctga::chains::model<Tree, T>& m) {
     return out;
 }
 
-}  // namespace ctga_test
+}  // namespace ctga::chains

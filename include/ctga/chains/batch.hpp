@@ -1,0 +1,135 @@
+// Many robots at once: one tree's algorithm over the states of N robots, L robots per
+// instruction stream (ctga::pack<T, L>, support/pack.hpp), on as many threads as asked.
+//
+//   struct robot { ch::configuration<Tree> q; ch::joint_vector<Tree> qd, qdd, tau; ctga::error_code error; };
+//   std::vector<robot> robots(1000);                          // the layout users keep
+//   const auto lanes = ch::model_cast<ctga::pack<double, 8>>(m);   // the model in every lane, once
+//   std::size_t failed = ch::batch_call(ch::rnea, lanes, robots, &robot::tau, &robot::error, 1,  // 1 thread
+//                                       &robot::q, &robot::qd, &robot::qdd);
+//
+// The algorithms are the scalar ones with pack<T, L> as the scalar: one instruction stream, each
+// lane its own robot, no lane reading another's numbers. A robot's inputs are gathered into its
+// lane from the array of structures (`load`), its results scattered back (`store`); the last pack of
+// a batch whose N is not a multiple of L fills its spare lanes with copies of its last robot
+// (finite numbers, results never stored).
+//
+// Checked, lane by lane. The packs are plain arithmetic: a NaN in one robot's q gives NaNs in that
+// lane only. batch_call checks each robot's inputs and results as checked_call does
+// (checked_call.hpp: non_finite, not_a_motor), writes each robot's error_code and returns the
+// number of robots that failed; the others' results are those of the algorithm on their inputs.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <functional>
+#include <thread>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+#include "ctga/chains/checked_call.hpp"
+#include "ctga/chains/tree.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/pack.hpp"
+
+namespace ctga::chains {
+
+namespace batch_detail {
+// x with every pack replaced by its lane l: a number, or an array of them (nested: a matrix).
+template <class T, std::size_t L>
+constexpr T lane_of(const pack<T, L>& x, std::size_t l) noexcept {
+    return x[l];
+}
+template <class X, std::size_t K>
+constexpr auto lane_of(const std::array<X, K>& x, std::size_t l) noexcept {
+    std::array<decltype(lane_of(x[0], l)), K> out;
+    for (std::size_t k = 0; k < K; ++k) out[k] = lane_of(x[k], l);
+    return out;
+}
+template <class T, std::size_t L>
+constexpr void set_lane(pack<T, L>& x, std::size_t l, const T& v) noexcept {
+    x.set(l, v);
+}
+template <class X, class Y, std::size_t K>
+constexpr void set_lane(std::array<X, K>& x, std::size_t l, const std::array<Y, K>& v) noexcept {
+    for (std::size_t k = 0; k < K; ++k) set_lane(x[k], l, v[k]);
+}
+// The same structure with pack<T, L> for every number T (std::array nests).
+template <class X, std::size_t L>
+struct packed {
+    using type = pack<X, L>;
+};
+template <class X, std::size_t K, std::size_t L>
+struct packed<std::array<X, K>, L> {
+    using type = std::array<typename packed<X, L>::type, K>;
+};
+}  // namespace batch_detail
+
+// Robots first … first + L − 1 of `robots` (a random-access range of structures) as packs:
+// lane l holds std::invoke(member, robots[first + l]) (a pointer to an array member, or a
+// function returning one); past robots.size() a lane repeats the last robot.
+template <std::size_t L, class Robots, class Member>
+[[nodiscard]] constexpr auto load(const Robots& robots, std::size_t first, Member member) noexcept {
+    using scalar_value = std::remove_cvref_t<decltype(std::invoke(member, robots[0]))>;
+    typename batch_detail::packed<scalar_value, L>::type out;
+    const std::size_t n = std::size(robots);
+    for (std::size_t l = 0; l < L; ++l)
+        batch_detail::set_lane(out, l, std::invoke(member, robots[first + l < n ? first + l : n - 1]));
+    return out;
+}
+
+// The lanes of x back into robots first … (those that exist): std::invoke(member, robots[first + l]) = lane l.
+template <std::size_t L, class X, class Robots, class Member>
+constexpr void store(const X& x, Robots& robots, std::size_t first, Member member) noexcept {
+    const std::size_t n = std::size(robots);
+    for (std::size_t l = 0; l < L && first + l < n; ++l) std::invoke(member, robots[first + l]) = batch_detail::lane_of(x, l);
+}
+
+// f(first) for first = 0, L, 2L, … < n: every pack of a batch of n robots, the last one
+// possibly partial. With threads > 1 the packs are cut into that many contiguous runs, each run
+// on its own std::thread (0: std::thread::hardware_concurrency()); f must then write only its
+// own robots.
+template <std::size_t L, class F>
+void for_each_pack(std::size_t n, unsigned threads, F&& f) {
+    const std::size_t packs = (n + L - 1) / L;
+    if (threads == 0) threads = std::thread::hardware_concurrency();
+    if (threads <= 1 || packs <= 1) {
+        for (std::size_t p = 0; p < packs; ++p) f(p * L);
+        return;
+    }
+    if (threads > packs) threads = static_cast<unsigned>(packs);
+    const auto run = [&](std::size_t begin, std::size_t end) {
+        for (std::size_t p = begin; p < end; ++p) f(p * L);
+    };
+    std::vector<std::thread> pool;
+    pool.reserve(threads - 1);
+    for (unsigned t = 1; t < threads; ++t) pool.emplace_back(run, packs * t / threads, packs * (t + 1) / threads);
+    run(0, packs / threads);
+    for (auto& th : pool) th.join();
+}
+
+// out = algorithm(model, in…) for every robot of `robots`, L at a time (lanes: the model cast to
+// pack<T, L>, model_cast.hpp), each robot's error_code in its `error` member (none, or why its
+// inputs or results are not acceptable, as checked_call). Returns the number of robots that failed.
+// The inputs are members or functions giving q and then the algorithm's further arguments.
+template <class Algorithm, class Tree, class T, std::size_t L, class Robots, class Out, class Error, class Q, class... In>
+std::size_t batch_call(const Algorithm& algorithm, const model<Tree, pack<T, L>>& lanes, Robots& robots, Out out, Error error,
+                       unsigned threads, Q q, In... in) {
+    const std::size_t n = std::size(robots);
+    std::size_t total = 0;
+    for_each_pack<L>(n, threads, [&](std::size_t first) {
+        const auto result = algorithm(lanes, load<L>(robots, first, q), load<L>(robots, first, in)...);
+        store<L>(result, robots, first, out);
+        for (std::size_t i = first; i < first + L && i < n; ++i) {
+            auto& r = robots[i];
+            error_code e = algorithm_detail::check_configuration<Tree>(std::invoke(q, r));
+            if (e == error_code::none && !(algorithm_detail::finite_all(std::invoke(in, r)) && ...)) e = error_code::non_finite;
+            if (e == error_code::none && !algorithm_detail::finite_all(std::invoke(out, r))) e = error_code::non_finite;
+            std::invoke(error, r) = e;
+        }
+    });
+    for (const auto& r : robots) total += std::invoke(error, r) != error_code::none;
+    return total;
+}
+
+}  // namespace ctga::chains

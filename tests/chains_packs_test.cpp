@@ -1,0 +1,245 @@
+// The tree algorithms with ctga::pack<double, L> as the scalar (support/pack.hpp): one model cast
+// to every lane (chains::model_cast), each lane its own robot's state, against the double
+// algorithms run robot by robot (themselves checked against the Featherstone reference in
+// chains_test). Random trees with about half their joints aligned, one on a floating base.
+//   - Lanes equal the double results to 1e-14 relative where the joints turn (the packs' cos and
+//     sin are pack.hpp's polynomials, within 1 ulp of libm's) and bit for bit on a tree whose
+//     joints slide (no cos or sin: the same operations in the same order).
+//   - batch_call: robots gathered from an array of structures, N not a multiple of the lane count,
+//     on one and on two threads, with poisoned robots (a NaN in q, a floating base whose rotor is
+//     zero, a NaN in q̇): those are reported (non_finite, not_a_motor), every other robot's
+//     results are bit for bit those of an all-healthy batch.
+// PARTS: 5
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <ctga/chains/algorithms.hpp>
+#include <ctga/chains/batch.hpp>
+#include <ctga/chains/model_cast.hpp>
+#include <ctga/support/pack.hpp>
+
+#include "support/catch.hpp"
+#include "support/parts.hpp"
+#include "support/random_structure.hpp"
+
+namespace {
+
+namespace ch = ctga::chains;
+using ctga::pack;
+using ctga::test::draw;
+using ctga::test::make_draw;
+using ctga::test::random_structure;
+
+// The largest |lane l of a − b| / (1 + |b|) over two structures of numbers (arrays nest).
+template <class A, class B, std::size_t K>
+double lane_error(const std::array<A, K>& a, const std::array<B, K>& b, std::size_t l);
+template <class A, class B>
+    requires requires(const A& a) { a.size(); a[0]; }
+double lane_error(const A& a, const B& b, std::size_t l);
+template <class T, std::size_t L>
+double lane_error(const pack<T, L>& a, const T& b, std::size_t l) {
+    const double d = std::abs(a[l] - b) / (1 + std::abs(b));
+    return d == d ? d : std::numeric_limits<double>::infinity();
+}
+template <class A, class B, std::size_t K>
+double lane_error(const std::array<A, K>& a, const std::array<B, K>& b, std::size_t l) {
+    double e = 0;
+    for (std::size_t k = 0; k < K; ++k) e = std::max(e, lane_error(a[k], b[k], l));
+    return e;
+}
+// a multivector, a motor_map, a kinematics: compared through their numbers
+template <class A, class B>
+    requires requires(const A& a) { a.size(); a[0]; }
+double lane_error(const A& a, const B& b, std::size_t l) {
+    double e = 0;
+    for (std::size_t k = 0; k < a.size(); ++k) e = std::max(e, lane_error(a[k], b[k], l));
+    return e;
+}
+// a tree_matrix (nv × nv, entries (i, j))
+template <class A, class B>
+    requires requires(const A& a) { a(0, 0); A::n; }
+double lane_error(const A& a, const B& b, std::size_t l) {
+    double e = 0;
+    for (std::size_t i = 0; i < A::n; ++i)
+        for (std::size_t j = 0; j < A::n; ++j) e = std::max(e, lane_error(a(i, j), b(i, j), l));
+    return e;
+}
+template <class T, std::size_t L>
+double lane_error(const ctga::motor_map<pack<T, L>>& a, const ctga::motor_map<T>& b, std::size_t l) {
+    return std::max(lane_error(a.R, b.R, l), lane_error(a.t, b.t, l));
+}
+
+template <class Tree>
+struct robot {
+    ch::configuration<Tree> q{};
+    ch::joint_vector<Tree> qd{}, qdd{}, tau{};
+};
+
+// L robots of one model: the pack states, and each robot's own
+template <class Tree, std::size_t L>
+struct lanes_of {
+    draw<Tree> d;
+    std::array<robot<Tree>, L> robots;
+    ch::configuration<Tree, pack<double, L>> q;
+    ch::joint_vector<Tree, pack<double, L>> qd, qdd, tau;
+
+    explicit lanes_of(std::uint64_t seed) {
+        std::mt19937_64 rng(seed);
+        d = make_draw<Tree>(rng);
+        for (auto& r : robots) {
+            const draw<Tree> other = make_draw<Tree>(rng);  // its state only
+            r.q = other.q, r.qd = other.qd, r.qdd = other.qdd;
+            for (std::size_t k = 0; k < Tree::nv; ++k) r.tau[k] = 3 * other.qdd[k] - other.qd[k];
+        }
+        q = ch::load<L>(robots, 0, &robot<Tree>::q);
+        qd = ch::load<L>(robots, 0, &robot<Tree>::qd);
+        qdd = ch::load<L>(robots, 0, &robot<Tree>::qdd);
+        tau = ch::load<L>(robots, 0, &robot<Tree>::tau);
+    }
+};
+
+// Every algorithm, lane against robot; tolerance 0 asks for the same bits.
+template <class Tree, std::size_t L>
+void compare(std::uint64_t seed, double tolerance) {
+    using P = pack<double, L>;
+    const lanes_of<Tree, L> x(seed);
+    const ch::model<Tree>& m = x.d.m;
+    const ch::model<Tree, P> mp = ch::model_cast<P>(m);
+    const auto tau = ch::rnea(mp, x.q, x.qd, x.qdd);
+    const auto qdd = ch::aba(mp, x.q, x.qd, x.tau);
+    const auto H = ch::crba(mp, x.q);
+    const auto Minv = ch::minverse(mp, x.q);
+    const ch::kinematics<Tree, P> k = ch::forward_kinematics(mp, x.q, x.qd, x.qdd);
+    constexpr std::size_t last = Tree::size - 1;
+    const auto J = ch::frame_jacobian(mp, x.q, ch::body<last>, ch::reference::world);
+    const auto com = ch::center_of_mass(mp, k);
+    const P energy = ch::tree_kinetic_energy(mp, x.q, x.qd);
+    const auto Ag = ch::centroidal_momentum_matrix(mp, k);
+    for (std::size_t l = 0; l < L; ++l) {
+        INFO("bodies " << Tree::size << ", lanes " << L << ", lane " << l);
+        const robot<Tree>& r = x.robots[l];
+        CHECK(lane_error(tau, ch::rnea(m, r.q, r.qd, r.qdd), l) <= tolerance);
+        CHECK(lane_error(qdd, ch::aba(m, r.q, r.qd, r.tau), l) <= tolerance);
+        CHECK(lane_error(H, ch::crba(m, r.q), l) <= tolerance);
+        CHECK(lane_error(Minv, ch::minverse(m, r.q), l) <= tolerance);
+        const ch::kinematics<Tree> k_l = ch::forward_kinematics(m, r.q, r.qd, r.qdd);
+        for (std::size_t i = 0; i < Tree::size; ++i) {
+            CHECK(lane_error(k.pose[i], k_l.pose[i], l) <= tolerance);
+            CHECK(lane_error(k.v[i], k_l.v[i], l) <= tolerance);
+            CHECK(lane_error(k.a[i], k_l.a[i], l) <= tolerance);
+        }
+        CHECK(lane_error(J, ch::frame_jacobian(m, r.q, ch::body<last>, ch::reference::world), l) <= tolerance);
+        const auto com_l = ch::center_of_mass(m, k_l);
+        CHECK(lane_error(com.mass, com_l.mass, l) <= tolerance);
+        CHECK(lane_error(com.position, com_l.position, l) <= tolerance);
+        CHECK(lane_error(com.velocity, com_l.velocity, l) <= tolerance);
+        CHECK(lane_error(energy, ch::tree_kinetic_energy(m, r.q, r.qd), l) <= tolerance);
+        CHECK(lane_error(Ag, ch::centroidal_momentum_matrix(m, k_l), l) <= tolerance);
+    }
+}
+
+// The derivatives of RNEA and ABA, lane against robot.
+template <class Tree, std::size_t L>
+void compare_derivatives(std::uint64_t seed) {
+    using P = pack<double, L>;
+    const lanes_of<Tree, L> x(seed);
+    const ch::model<Tree>& m = x.d.m;
+    const ch::model<Tree, P> mp = ch::model_cast<P>(m);
+    const auto dr = ch::rnea_derivatives(mp, x.q, x.qd, x.qdd);
+    const auto da = ch::aba_derivatives(mp, x.q, x.qd, x.tau);
+    for (std::size_t l = 0; l < L; ++l) {
+        INFO("bodies " << Tree::size << ", lanes " << L << ", lane " << l);
+        const robot<Tree>& r = x.robots[l];
+        const auto dr_l = ch::rnea_derivatives(m, r.q, r.qd, r.qdd);
+        const auto da_l = ch::aba_derivatives(m, r.q, r.qd, r.tau);
+        CHECK(lane_error(dr.dtau_dq, dr_l.dtau_dq, l) <= 1e-13);
+        CHECK(lane_error(dr.dtau_dv, dr_l.dtau_dv, l) <= 1e-13);
+        CHECK(lane_error(da.qdd, da_l.qdd, l) <= 1e-13);
+        CHECK(lane_error(da.dqdd_dq, da_l.dqdd_dq, l) <= 1e-13);
+        CHECK(lane_error(da.dqdd_dv, da_l.dqdd_dv, l) <= 1e-13);
+    }
+}
+
+// A floating base and sliding joints, some aligned: no cos or sin anywhere.
+using sliding_tree = ch::tree<ch::link<-1, ch::floating>, ch::link<0, ch::aligned<ch::prismatic_x>>, ch::link<1, ch::prismatic_along>,
+                              ch::link<0, ch::prismatic_z>, ch::link<3, ch::fixed>, ch::link<4, ch::aligned<ch::prismatic_y>>>;
+
+// batch_call over n robots (n not a multiple of L) on `threads` threads, robots 2, n − 2 and n − 1
+// poisoned when asked.
+template <class Tree, std::size_t L>
+void check_batch(std::uint64_t seed, std::size_t n, unsigned threads) {
+    using P = pack<double, L>;
+    struct state {
+        ch::configuration<Tree> q{};
+        ch::joint_vector<Tree> qd{}, tau{}, qdd{};
+        ctga::error_code error = ctga::error_code::did_not_converge;  // overwritten by batch_call
+    };
+    std::mt19937_64 rng(seed);
+    const draw<Tree> d = make_draw<Tree>(rng);
+    std::vector<state> healthy(n);
+    for (auto& s : healthy) {
+        const draw<Tree> other = make_draw<Tree>(rng);
+        s.q = other.q, s.qd = other.qd, s.tau = other.qdd;
+    }
+    std::vector<state> poisoned = healthy;
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    poisoned[2].q[Tree::nq - 1] = nan;
+    for (std::size_t c = 0; c < 4; ++c) poisoned[n - 2].q[c] = 0;  // the floating base's rotor part
+    poisoned[n - 1].qd[0] = nan;
+    const auto lanes = ch::model_cast<P>(d.m);
+    const std::size_t failed_healthy =
+        ch::batch_call(ch::aba, lanes, healthy, &state::qdd, &state::error, threads, &state::q, &state::qd, &state::tau);
+    const std::size_t failed =
+        ch::batch_call(ch::aba, lanes, poisoned, &state::qdd, &state::error, threads, &state::q, &state::qd, &state::tau);
+    CHECK(failed_healthy == 0);
+    CHECK(failed == 3);
+    for (std::size_t i = 0; i < n; ++i) {
+        INFO("robot " << i << " of " << n << ", lanes " << L << ", threads " << threads);
+        const state& h = healthy[i];
+        CHECK(h.error == ctga::error_code::none);
+        CHECK(lane_error(ch::load<1>(healthy, i, &state::qdd), ch::aba(d.m, h.q, h.qd, h.tau), 0) <= 1e-14);
+        const ctga::error_code expected = i == 2 || i == n - 1 ? ctga::error_code::non_finite
+                                          : i == n - 2         ? ctga::error_code::not_a_motor
+                                                               : ctga::error_code::none;
+        CHECK(poisoned[i].error == expected);
+        if (expected == ctga::error_code::none)
+            for (std::size_t k = 0; k < Tree::nv; ++k) CHECK(poisoned[i].qdd[k] == h.qdd[k]);
+    }
+}
+
+}  // namespace
+
+#define PACKS_CASE(name) TEST_CASE("chains on packs: " name CTGA_TEST_PART_NAME)
+#if CTGA_TEST_PART_HOLDS(0)
+PACKS_CASE("every lane equals the double algorithms on its robot, 5 bodies, 4 lanes") {
+    compare<random_structure<51, 5, false, true>::type, 4>(51, 1e-14);
+}
+#endif
+#if CTGA_TEST_PART_HOLDS(1)
+PACKS_CASE("sliding joints on a floating base: every lane bit for bit the double algorithms, 2 lanes") {
+    compare<sliding_tree, 2>(57, 0);
+}
+#endif
+#if CTGA_TEST_PART_HOLDS(2)
+PACKS_CASE("every lane equals the double algorithms on its robot, 5 bodies on a floating base, 8 lanes") {
+    compare<random_structure<52, 5, true, true>::type, 8>(53, 1e-14);
+}
+#endif
+#if CTGA_TEST_PART_HOLDS(3)
+PACKS_CASE("derivatives of RNEA and ABA, 5 bodies on a floating base, 4 lanes") {
+    compare_derivatives<random_structure<54, 5, true, true>::type, 4>(54);
+}
+#endif
+#if CTGA_TEST_PART_HOLDS(4)
+PACKS_CASE("batch_call: N not a multiple of the lanes, poisoned robots reported, the others untouched") {
+    using Tree = random_structure<55, 6, true, true>::type;
+    check_batch<Tree, 4>(55, 23, 1);
+    check_batch<Tree, 4>(56, 10, 2);
+    check_batch<Tree, 8>(57, 13, 2);
+}
+#endif

@@ -32,6 +32,8 @@
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/mechanics/screw.hpp"
 #include "ctga/support/inline.hpp"
+#include "ctga/support/math.hpp"
+#include "ctga/support/uninitialized.hpp"
 
 namespace ctga {
 
@@ -74,6 +76,12 @@ struct articulated_inertia {
     using scalar = cl062::mv<T, "1">;
     std::array<scalar, 21> n{};  // N(i, j) for i ≤ j, row by row (articulated_detail::upper_index)
 
+    // Entries not cleared, for a result every entry of which is written (support/uninitialized.hpp:
+    // for packs of 8 lanes the clearing was a 1.3 KB memset per inertia the compiler kept).
+    [[nodiscard]] static constexpr articulated_inertia uninitialized_value() noexcept {
+        return articulated_inertia{uninitialized_array<scalar, 21>()};
+    }
+
     [[nodiscard]] constexpr T operator()(std::size_t i, std::size_t j) const noexcept {
         return i <= j ? n[articulated_detail::upper_index(i, j)][0] : n[articulated_detail::upper_index(j, i)][0];
     }
@@ -84,7 +92,7 @@ struct articulated_inertia {
     // Inertias in one frame add (§5: N is linear in the mass distribution): 21a.
     [[nodiscard]] friend constexpr articulated_inertia operator+(const articulated_inertia& a,
                                                                  const articulated_inertia& b) noexcept {
-        articulated_inertia out;
+        articulated_inertia out = uninitialized_value();
         for (std::size_t k = 0; k < 21; ++k) out.n[k] = a.n[k] + b.n[k];
         return out;
     }
@@ -124,9 +132,9 @@ template <class T>
 template <std::size_t Null = 6, class T>
 [[nodiscard]] constexpr articulated_inertia<T> minus_joint(const articulated_inertia<T>& N, const coscrew<T>& U,
                                                            const T& D_inverse) noexcept {
-    std::array<T, 6> W{};  // U / D
+    std::array<T, 6> W;  // U / D
     for (std::size_t i = 0; i < 6; ++i) W[i] = U[i] * D_inverse;
-    articulated_inertia<T> out;
+    articulated_inertia<T> out = articulated_inertia<T>::uninitialized_value();
     [&]<std::size_t... K>(std::index_sequence<K...>) {
         ((out.n[K] = typename articulated_inertia<T>::scalar{
               articulated_detail::upper_entries[K].i == Null || articulated_detail::upper_entries[K].j == Null
@@ -150,7 +158,7 @@ CTGA_ALWAYS_INLINE constexpr mat3<T> rotate_block(const mat3<T>& R, const mat3<T
             XRt[k][1] = linear3::row_dot<by_col, 1>(R, X[k]);
             XRt[k][2] = linear3::row_dot<by_col, 2>(R, X[k]);
         }
-    mat3<T> out{};  // R (X Rᵀ): entry (i, j) = row i of R · column j of X Rᵀ
+    mat3<T> out;  // R (X Rᵀ): entry (i, j) = row i of R · column j of X Rᵀ
     for (std::size_t j = 0; j < 3; ++j) {
         const vec3<T> column{XRt[0][j], XRt[1][j], XRt[2][j]};
         out[0][j] = linear3::row_dot<by_row, 0>(R, column);
@@ -169,31 +177,32 @@ CTGA_ALWAYS_INLINE constexpr mat3<T> rotate_block(const mat3<T>& R, const mat3<T
 // i of −Y T is t × (row i of Y)). 189m 150a for a full N; with a zero row and column Null
 // (minus_joint after an axis joint) the rotations skip it: 159m for a revolute joint's N; with R
 // of shape S (an aligned joint's turn about a coordinate axis) they skip its zeros too.
-template <std::size_t Null = 6, linear3::shape S = linear3::dense, class T>
-CTGA_SCALAR_CODE [[nodiscard]] constexpr articulated_inertia<T> transform(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
+namespace articulated_detail {
+template <std::size_t Null, linear3::shape S, class T>
+CTGA_ALWAYS_INLINE constexpr articulated_inertia<T> transform(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
     using linear3::cross;
     constexpr std::size_t skip_w = Null < 3 ? Null : 3, skip_v = Null >= 3 && Null < 6 ? Null - 3 : 3;
     const mat3<T>& R = G.R;
     const vec3<T>& t = G.t;
-    mat3<T> A{}, B{}, C{};
+    mat3<T> A, B, C;  // every entry written
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) A[i][j] = N(i, j), B[i][j] = N(i, j + 3), C[i][j] = N(i + 3, j + 3);
     const mat3<T> A1 = articulated_detail::rotate_block<skip_w, skip_w, S>(R, A);
     const mat3<T> B1 = articulated_detail::rotate_block<skip_w, skip_v, S>(R, B);
     const mat3<T> C1 = articulated_detail::rotate_block<skip_v, skip_v, S>(R, C);
     // Y = T C' column by column (C' symmetric: its columns are its rows); B'' = B' + Y
-    mat3<T> Y{};
+    mat3<T> Y;
     for (std::size_t j = 0; j < 3; ++j) {
         const vec3<T> y = cross(t, C1[j]);
         for (std::size_t i = 0; i < 3; ++i) Y[i][j] = y[i];
     }
     // X = T B'ᵀ: column j is t × (row j of B')
-    mat3<T> X{};
+    mat3<T> X;
     for (std::size_t j = 0; j < 3; ++j) {
         const vec3<T> x = cross(t, B1[j]);
         for (std::size_t i = 0; i < 3; ++i) X[i][j] = x[i];
     }
-    articulated_inertia<T> out;
+    articulated_inertia<T> out = articulated_inertia<T>::uninitialized_value();  // all 21 entries set below
     for (std::size_t i = 0; i < 3; ++i) {
         const vec3<T> z = cross(t, Y[i]);  // row i of −Y T
         for (std::size_t j = i; j < 3; ++j) out.set(i, j, A1[i][j] + X[i][j] + X[j][i] + z[j]);
@@ -201,6 +210,16 @@ CTGA_SCALAR_CODE [[nodiscard]] constexpr articulated_inertia<T> transform(const 
         for (std::size_t j = i; j < 3; ++j) out.set(i + 3, j + 3, C1[i][j]);
     }
     return out;
+}
+template <std::size_t Null, linear3::shape S, class T>
+CTGA_SCALAR_CODE constexpr articulated_inertia<T> transform_scalar(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
+    return articulated_detail::transform<Null, S>(G, N);
+}
+}  // namespace articulated_detail
+template <std::size_t Null = 6, linear3::shape S = linear3::dense, class T>
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr articulated_inertia<T> transform(const motor_map<T>& G, const articulated_inertia<T>& N) noexcept {
+    if constexpr (lane_wise<T>) return articulated_detail::transform<Null, S>(G, N);
+    else return articulated_detail::transform_scalar<Null, S>(G, N);
 }
 
 // s = N⁻¹ P, the screw the articulated inertia takes to P (N symmetric positive definite, as a

@@ -2,7 +2,8 @@
 // and of the legged tree over batches of robots, robot by robot in doubles and 4 or 8 robots per
 // instruction stream (ctga::pack<double, 4 | 8>): batch_<algorithm>_<tree>/<scalar|pack4|pack8>
 // (chains_batch_arm7.cpp, chains_batch_tree.cpp); rollouts of 1,024 arms by lie_rk4 on one core
-// and on all (chains_batch_rollout.cpp); and this core's FMA peak per width, which the arm's rows
+// and on all (chains_batch_rollout.cpp); free bodies in scenes/batch.hpp's structure of arrays and
+// in packs (chains_batch_bodies.cpp); and this core's FMA peak per width, which the arm's rows
 // report beside their rate. Built with -march=native (this target only: bench/CMakeLists.txt).
 #include <algorithm>
 #include <chrono>
@@ -50,6 +51,7 @@ int main(int argc, char** argv) {
     add_arm7();
     add_tree();
     add_rollouts();
+    add_bodies();
     benchmark::Initialize(&argc, argv);
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

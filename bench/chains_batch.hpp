@@ -120,5 +120,6 @@ void add_widths(const std::string& name, const ch::model<Tree>& m, const std::ar
 void add_arm7();
 void add_tree();
 void add_rollouts();
+void add_bodies();
 
 }  // namespace bench::batch

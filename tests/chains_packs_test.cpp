@@ -9,7 +9,11 @@
 //     on one and on two threads, with poisoned robots (a NaN in q, a floating base whose rotor is
 //     zero, a NaN in q̇): those are reported (non_finite, not_a_motor), every other robot's
 //     results are bit for bit those of an all-healthy batch.
-// PARTS: 5
+//   - batch_integrate: lie_rk4 and the implicit midpoint (Newton and fixed point) over robots on a
+//     floating base, each lane against ctga::integrate of its robot alone; a robot too fast for
+//     the fixed-point iteration (did_not_converge) and one with a NaN (non_finite) stop there,
+//     the others run all their steps.
+// PARTS: 6
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -21,6 +25,9 @@
 #include <ctga/chains/algorithms.hpp>
 #include <ctga/chains/batch.hpp>
 #include <ctga/chains/model_cast.hpp>
+#include <ctga/chains/motion.hpp>
+#include <ctga/integrators/integrate.hpp>
+#include <ctga/integrators/methods.hpp>
 #include <ctga/support/pack.hpp>
 
 #include "support/catch.hpp"
@@ -87,10 +94,12 @@ struct lanes_of {
     std::array<robot<Tree>, L> robots;
     ch::configuration<Tree, pack<double, L>> q;
     ch::joint_vector<Tree, pack<double, L>> qd, qdd, tau;
+    ch::model<Tree, pack<double, L>> mp;  // d.m in every lane
 
     explicit lanes_of(std::uint64_t seed) {
         std::mt19937_64 rng(seed);
         d = make_draw<Tree>(rng);
+        mp = ch::model_cast<pack<double, L>>(d.m);
         for (auto& r : robots) {
             const draw<Tree> other = make_draw<Tree>(rng);  // its state only
             r.q = other.q, r.qd = other.qd, r.qdd = other.qdd;
@@ -109,7 +118,7 @@ void compare(std::uint64_t seed, double tolerance) {
     using P = pack<double, L>;
     const lanes_of<Tree, L> x(seed);
     const ch::model<Tree>& m = x.d.m;
-    const ch::model<Tree, P> mp = ch::model_cast<P>(m);
+    const ch::model<Tree, P>& mp = x.mp;
     const auto tau = ch::rnea(mp, x.q, x.qd, x.qdd);
     const auto qdd = ch::aba(mp, x.q, x.qd, x.tau);
     const auto H = ch::crba(mp, x.q);
@@ -146,12 +155,10 @@ void compare(std::uint64_t seed, double tolerance) {
 // The derivatives of RNEA and ABA, lane against robot.
 template <class Tree, std::size_t L>
 void compare_derivatives(std::uint64_t seed) {
-    using P = pack<double, L>;
     const lanes_of<Tree, L> x(seed);
     const ch::model<Tree>& m = x.d.m;
-    const ch::model<Tree, P> mp = ch::model_cast<P>(m);
-    const auto dr = ch::rnea_derivatives(mp, x.q, x.qd, x.qdd);
-    const auto da = ch::aba_derivatives(mp, x.q, x.qd, x.tau);
+    const auto dr = ch::rnea_derivatives(x.mp, x.q, x.qd, x.qdd);
+    const auto da = ch::aba_derivatives(x.mp, x.q, x.qd, x.tau);
     for (std::size_t l = 0; l < L; ++l) {
         INFO("bodies " << Tree::size << ", lanes " << L << ", lane " << l);
         const robot<Tree>& r = x.robots[l];
@@ -212,6 +219,50 @@ void check_batch(std::uint64_t seed, std::size_t n, unsigned threads) {
     }
 }
 
+// batch_integrate against ctga::integrate robot by robot; robot 1 spins too fast for the step
+// (|q̇| = 400 rad/s at h = 0.02: the fixed-point iteration diverges) when `fast`, robot n − 1 has a
+// NaN in q̇.
+template <class Tree, std::size_t L, class Method>
+void check_rollout(const Method& method, std::uint64_t seed, std::size_t n, bool fast, double tolerance) {
+    using P = pack<double, L>;
+    struct state {
+        ch::configuration<Tree> q{};
+        ch::joint_vector<Tree> qd{};
+        ctga::error_code error = ctga::error_code::unknown_frame;  // overwritten
+    };
+    std::mt19937_64 rng(seed);
+    const draw<Tree> d = make_draw<Tree>(rng);
+    std::vector<state> robots(n);
+    for (auto& r : robots) {
+        const draw<Tree> other = make_draw<Tree>(rng);
+        r.q = other.q, r.qd = other.qd;
+    }
+    if (fast)
+        for (auto& v : robots[1].qd) v = 400;
+    robots[n - 1].qd[0] = std::numeric_limits<double>::quiet_NaN();
+    const std::vector<state> start = robots;
+    const double h = fast ? 0.02 : 0.005;
+    const long steps = 20;
+    const ch::tree_motion<Tree> sim{d.m};
+    const ch::tree_motion<Tree, P> lanes{ch::model_cast<P>(d.m)};
+    const std::size_t failed = ch::batch_integrate(method, lanes, robots, &state::q, &state::qd, &state::error, h, steps, 2);
+    CHECK(failed == (fast ? 2u : 1u));
+    for (std::size_t i = 0; i < n; ++i) {
+        INFO("robot " << i << " of " << n << ", lanes " << L);
+        const auto alone = ctga::integrate(method, sim, {{start[i].q}, {start[i].qd}}, h, steps);
+        CHECK(robots[i].error == alone.error);
+        if (i == n - 1) {
+            CHECK(robots[i].error == ctga::error_code::non_finite);
+        } else if (fast && i == 1) {
+            CHECK(robots[i].error == ctga::error_code::did_not_converge);
+        } else {
+            CHECK(robots[i].error == ctga::error_code::none);
+            for (std::size_t k = 0; k < Tree::nq; ++k) CHECK(std::abs(robots[i].q[k] - alone.state.g[k]) <= tolerance * (1 + std::abs(alone.state.g[k])));
+            for (std::size_t k = 0; k < Tree::nv; ++k) CHECK(std::abs(robots[i].qd[k] - alone.state.s[k]) <= tolerance * (1 + std::abs(alone.state.s[k])));
+        }
+    }
+}
+
 }  // namespace
 
 #define PACKS_CASE(name) TEST_CASE("chains on packs: " name CTGA_TEST_PART_NAME)
@@ -241,5 +292,13 @@ PACKS_CASE("batch_call: N not a multiple of the lanes, poisoned robots reported,
     check_batch<Tree, 4>(55, 23, 1);
     check_batch<Tree, 4>(56, 10, 2);
     check_batch<Tree, 8>(57, 13, 2);
+}
+#endif
+#if CTGA_TEST_PART_HOLDS(5)
+PACKS_CASE("batch_integrate: lie_rk4 and the implicit midpoint lane by lane, a diverging and a poisoned robot stopped") {
+    using Tree = random_structure<58, 4, true, true>::type;
+    check_rollout<Tree, 4>(ctga::lie_rk4{}, 58, 11, false, 1e-13);
+    check_rollout<Tree, 4>(ctga::implicit_midpoint{}, 59, 7, false, 1e-12);
+    check_rollout<Tree, 4>(ctga::implicit_midpoint{.solver = ctga::implicit_solver::fixed_point}, 60, 6, true, 1e-12);
 }
 #endif

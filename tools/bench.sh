@@ -63,7 +63,14 @@ for group in small 32 64; do
     scaling+=("$out/chains_scaling_$group.json")
 done
 
+# many robots at once: ctga_batch_bench (-march=native), its first line the FMA peak per width
+cmake --build "$BUILD_DIR" --target ctga_batch_bench -j"$(nproc)"
+"$out/ctga_batch_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
+    --benchmark_out="$out/batch.json" --benchmark_out_format=json >"$out/batch.txt"
+head -n 1 "$out/batch.txt" >"$out/batch_peak.txt"
+
 /usr/bin/python3 tools/render_benchmarks.py "$out/results.json" "$out/instructions.txt" \
     "$out/compile_cost.md" docs/benchmarks.md docs/img/benchmarks.svg \
     "$out/chains.json" "$out/chains_instructions.txt" docs/img/chains_scaling.svg "${scaling[@]}"
+{ echo; /usr/bin/python3 tools/render_batches.py "$out/batch.json" "$out/batch_peak.txt"; } >>docs/benchmarks.md
 echo "bench: wrote docs/benchmarks.md and docs/img/benchmarks.svg"

@@ -28,8 +28,10 @@
 #include <vector>
 
 #include "ctga/chains/checked_call.hpp"
+#include "ctga/chains/motion.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/support/checked.hpp"
+#include "ctga/integrators/model.hpp"
 #include "ctga/support/pack.hpp"
 
 namespace ctga::chains {
@@ -130,6 +132,52 @@ std::size_t batch_call(const Algorithm& algorithm, const model<Tree, pack<T, L>>
     });
     for (const auto& r : robots) total += std::invoke(error, r) != error_code::none;
     return total;
+}
+
+// `steps` steps of `method` (integrators/methods.hpp) for every robot of `robots`, L at a time
+// (sim: a tree_motion in pack<T, L>, chains/motion.hpp), from and back into the members q and qd.
+// Lane by lane as ctga::integrate does for one robot: a robot whose input is not finite (or whose
+// floating base is no motor) is not stepped; a robot whose step fails (did_not_converge, a
+// non-finite state) stops at its last good state; each robot's error_code (none, or why it
+// stopped) goes to its `error` member. Returns the number of robots that stopped early.
+template <class Method, class Tree, class T, std::size_t L, class Actuation, class Robots, class Q, class V, class Error>
+std::size_t batch_integrate(const Method& method, const tree_motion<Tree, pack<T, L>, Actuation>& sim, Robots& robots, Q q, V qd,
+                            Error error, const T& h, long steps, unsigned threads) {
+    using P = pack<T, L>;
+    using model_t = tree_motion<Tree, P, Actuation>;
+    const std::size_t n = std::size(robots);
+    for_each_pack<L>(n, threads, [&](std::size_t first) {
+        state_of<model_t> x;
+        x.g.x = load<L>(robots, first, q);
+        x.s.x = load<L>(robots, first, qd);
+        lane_errors<L> e;
+        for (std::size_t l = 0; l < L && first + l < n; ++l) {
+            const auto& r = robots[first + l];
+            e[l] = algorithm_detail::check_configuration<Tree>(std::invoke(q, r));
+            if (e[l] == error_code::none && !algorithm_detail::finite_all(std::invoke(qd, r))) e[l] = error_code::non_finite;
+        }
+        const auto running = [&] {
+            return P::generate([&](std::size_t l) { return e[l] == error_code::none ? T(0) : T(1); }) == P(T(0));
+        };
+        for (long k = 0; k < steps && any(running()); ++k) {
+            const auto next = method.step(sim, x, P(h));
+            for (std::size_t l = 0; l < L; ++l)
+                if (e[l] == error_code::none && next.error[l] != error_code::none) e[l] = next.error[l];
+            auto finite = finite_lanes(next.value.g[0]);
+            for (const P& c : next.value.g.x) finite = finite && finite_lanes(c);
+            for (const P& c : next.value.s.x) finite = finite && finite_lanes(c);
+            for (std::size_t l = 0; l < L; ++l)
+                if (e[l] == error_code::none && !finite[l]) e[l] = error_code::non_finite;
+            const auto ok = running();
+            x = {select(ok, next.value.g, x.g), select(ok, next.value.s, x.s)};
+        }
+        store<L>(x.g.x, robots, first, q);
+        store<L>(x.s.x, robots, first, qd);
+        for (std::size_t l = 0; l < L && first + l < n; ++l) std::invoke(error, robots[first + l]) = e[l];
+    });
+    std::size_t failed = 0;
+    for (const auto& r : robots) failed += std::invoke(error, r) != error_code::none;
+    return failed;
 }
 
 }  // namespace ctga::chains

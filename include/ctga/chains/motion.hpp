@@ -21,6 +21,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 
 #include "ctga/chains/aba.hpp"
 #include "ctga/chains/aba_derivatives.hpp"
@@ -40,6 +41,7 @@ template <std::size_t N, class T = double>
 struct coordinates {
     std::array<T, N> x{};
 
+    [[nodiscard]] static constexpr std::size_t size() noexcept { return N; }
     [[nodiscard]] constexpr T& operator[](std::size_t i) noexcept { return x[i]; }
     [[nodiscard]] constexpr const T& operator[](std::size_t i) const noexcept { return x[i]; }
     [[nodiscard]] friend constexpr coordinates operator+(const coordinates& a, const coordinates& b) noexcept {
@@ -154,8 +156,19 @@ struct tree_motion {
     }
     [[nodiscard]] constexpr T magnitude(const screw_type& z) const noexcept {
         T out = T(0);
-        for (const T& c : z.x) out = (c < T(0) ? -c : c) > out ? (c < T(0) ? -c : c) : out;
-        return out;
+        if constexpr (lane_wise<T>) {
+            // lane by lane; NaN in a lane with a NaN or infinite component (the implicit
+            // midpoint's lane-wise iteration reads its failures there)
+            auto finite = finite_lanes(out);
+            for (const T& c : z.x) {
+                out = select(abs(c) > out, abs(c), out);
+                finite = finite && finite_lanes(c);
+            }
+            return select(finite, out, T(std::numeric_limits<typename T::value_type>::quiet_NaN()));
+        } else {
+            for (const T& c : z.x) out = (c < T(0) ? -c : c) > out ? (c < T(0) ? -c : c) : out;
+            return out;
+        }
     }
 
     // The total energy: kinetic plus potential in the model's gravity.

@@ -29,6 +29,11 @@
 
 namespace ctga {
 
+// What a step returns: the new state, and error_code::none or why there is none; for a model in
+// packs (support/pack.hpp: one robot per lane) one error_code per lane (lane_errors).
+template <class M>
+using step_result = checked<state_of<M>, error_of_t<typename M::scalar_type>>;
+
 namespace integrator_detail {
 
 // x + c k on the flat state, in the model's own types.
@@ -67,11 +72,11 @@ struct explicit_euler {
     bool renormalize = false;
 
     template <motion_model M>
-    [[nodiscard]] constexpr checked<state_of<M>> step(const M& model, const state_of<M>& x,
+    [[nodiscard]] constexpr step_result<M> step(const M& model, const state_of<M>& x,
                                                       const typename M::scalar_type& h) const {
         state_of<M> y = integrator_detail::shifted<M>(x, h, integrator_detail::rates(model, x));
         if (renormalize) y.g = model.renormalize(y.g);
-        return {y, error_code::none};
+        return {y, {}};
     }
 };
 
@@ -80,7 +85,7 @@ struct rk4 {
     bool renormalize = true;
 
     template <motion_model M>
-    [[nodiscard]] constexpr checked<state_of<M>> step(const M& model, const state_of<M>& x,
+    [[nodiscard]] constexpr step_result<M> step(const M& model, const state_of<M>& x,
                                                       const typename M::scalar_type& h) const {
         using namespace integrator_detail;
         using T = typename M::scalar_type;
@@ -94,7 +99,7 @@ struct rk4 {
         state_of<M> y{motor_t(x.g + w * (k1.g + T(2) * (k2.g + k3.g) + k4.g)),
                       screw_t(x.s + w * (k1.s + T(2) * (k2.s + k3.s) + k4.s))};
         if (renormalize) y.g = model.renormalize(y.g);
-        return {y, error_code::none};
+        return {y, {}};
     }
 };
 
@@ -108,7 +113,7 @@ struct lie_rk4 {
     bool renormalize = false;
 
     template <motion_model M>
-    [[nodiscard]] constexpr checked<state_of<M>> step(const M& model, const state_of<M>& x,
+    [[nodiscard]] constexpr step_result<M> step(const M& model, const state_of<M>& x,
                                                       const typename M::scalar_type& h) const {
         using namespace integrator_detail;
         using T = typename M::scalar_type;
@@ -131,7 +136,7 @@ struct lie_rk4 {
         const screw_t theta(w * (K1 + T(2) * (K2 + K3) + K4));
         state_of<M> y{advance_pose(model, x.g, theta), screw_t(x.s + w * (L1 + T(2) * (L2 + L3) + L4))};
         if (renormalize) y.g = model.renormalize(y.g);
-        return {y, error_code::none};
+        return {y, {}};
     }
 };
 
@@ -150,15 +155,20 @@ struct lu {
 
     constexpr explicit lu(const std::array<std::array<T, N>, N>& A) noexcept : a(A) {
         for (std::size_t c = 0; c < N; ++c) {
-            std::size_t p = c;
-            for (std::size_t r = c + 1; r < N; ++r)
-                if ((a[r][c] < T(0) ? -a[r][c] : a[r][c]) > (a[p][c] < T(0) ? -a[p][c] : a[p][c])) p = r;
-            if (!(a[p][c] != T(0))) {
-                singular = true;
-                return;
+            if constexpr (!lane_wise<T>) {
+                std::size_t p = c;
+                for (std::size_t r = c + 1; r < N; ++r)
+                    if ((a[r][c] < T(0) ? -a[r][c] : a[r][c]) > (a[p][c] < T(0) ? -a[p][c] : a[p][c])) p = r;
+                if (!(a[p][c] != T(0))) {
+                    singular = true;
+                    return;
+                }
+                std::swap(a[p], a[c]);
+                std::swap(row[p], row[c]);
             }
-            std::swap(a[p], a[c]);
-            std::swap(row[p], row[c]);
+            // packs (one robot per lane) are not pivoted: rows cannot be swapped lane by lane. The
+            // Newton matrix 1 − O(h) is near the identity; a lane with a zero pivot gets
+            // non-finite numbers, and the midpoint's iteration reports that lane
             for (std::size_t r = c + 1; r < N; ++r) {
                 a[r][c] = a[r][c] / a[c][c];
                 for (std::size_t k = c + 1; k < N; ++k) a[r][k] = a[r][k] - a[r][c] * a[c][k];
@@ -257,54 +267,112 @@ struct implicit_midpoint {
     long* iterations = nullptr;
 
     template <motion_model M>
-    [[nodiscard]] constexpr checked<state_of<M>> step(const M& model, const state_of<M>& x,
+    [[nodiscard]] constexpr step_result<M> step(const M& model, const state_of<M>& x,
                                                       const typename M::scalar_type& h) const {
         using T = typename M::scalar_type;
         using screw_t = typename M::screw_type;
-        constexpr T eps = std::numeric_limits<T>::epsilon();
+        if constexpr (lane_wise<T>) return step_lanes(model, x, h);
+        else {
+            constexpr T eps = std::numeric_limits<T>::epsilon();
+            const auto midpoint_pose = [&](const screw_t& s_m, const T& c) {
+                return advance_pose(model, x.g, screw_t(c * h * s_m));
+            };
+            screw_t s1(x.s + h * model.acceleration(x.g, x.s));
+            T previous = std::numeric_limits<T>::infinity();
+            using factor = typename integrator_detail::newton_factor<M>::type;
+            std::optional<factor> newton;  // ∂F/∂s₁, factored
+            for (int i = 0; i < max_iterations; ++i) {
+                const screw_t s_m(T(1) / T(2) * (x.s + s1));
+                const auto g_m = midpoint_pose(s_m, T(1) / T(2));
+                screw_t next(x.s + h * model.acceleration(g_m, s_m));  // the fixed-point update
+                if constexpr (integrator_detail::with_acceleration_jacobian<M> || integrator_detail::with_acceleration_partials<M>) {
+                    if (solver == implicit_solver::newton) {
+                        // Newton: ∂F/∂s₁ Δ = s₀ + h a − s₁ = next − s₁, the matrix taken at the first
+                        // midpoint and factored once (a simplified Newton method: it moves by O(h)
+                        // within the step), and taken again where an update contracts by less than ½
+                        if (!newton) {
+                            newton.emplace(integrator_detail::newton_matrix(model, g_m, s_m, h));
+                            if (newton->singular) break;
+                        }
+                        std::array<T, factor::size> residual{};
+                        for (std::size_t r = 0; r < residual.size(); ++r) residual[r] = next[r] - s1[r];
+                        const auto delta = newton->solve(residual);
+                        for (std::size_t r = 0; r < residual.size(); ++r) next[r] = s1[r] + delta[r];
+                    }
+                }
+                if (!model.finite(x.g, next)) break;  // the iteration diverged
+                const T change = model.magnitude(screw_t(next - s1));
+                const T scale = model.magnitude(next) + model.magnitude(x.s);
+                s1 = next;
+                if (change <= eps * scale || (change >= previous && change <= T(1024) * eps * scale)) {
+                    if (iterations) *iterations += i + 1;
+                    const screw_t s_mid(T(1) / T(2) * (x.s + s1));
+                    state_of<M> y{midpoint_pose(s_mid, T(1)), s1};
+                    if (renormalize) y.g = model.renormalize(y.g);
+                    return {y, {}};
+                }
+                // a slow contraction: the matrix of the first midpoint no longer fits; take it anew
+                if (change > previous / T(2)) newton.reset();
+                previous = change;
+            }
+            if (iterations) *iterations += max_iterations;
+            return {x, error_code::did_not_converge};
+        }
+    }
+
+private:
+    // The same iteration lane by lane, for a model in packs (one robot per lane): a lane stops
+    // when its own update is small and keeps its s₁ from then on; the Newton matrix is taken again
+    // when a lane still iterating contracts by less than ½ (so a lane may take other iterates than
+    // its scalar run: the two s₁ agree to the stopping tolerance). A lane whose iterate is not
+    // finite, or that has not converged after max_iterations, reports did_not_converge and keeps
+    // its initial state; the others are stepped.
+    template <motion_model M>
+    [[nodiscard]] constexpr step_result<M> step_lanes(const M& model, const state_of<M>& x, const typename M::scalar_type& h) const {
+        using T = typename M::scalar_type;
+        using screw_t = typename M::screw_type;
+        using mask = typename T::mask;
+        const T eps(std::numeric_limits<typename T::value_type>::epsilon());
         const auto midpoint_pose = [&](const screw_t& s_m, const T& c) {
             return advance_pose(model, x.g, screw_t(c * h * s_m));
         };
         screw_t s1(x.s + h * model.acceleration(x.g, x.s));
-        T previous = std::numeric_limits<T>::infinity();
+        T previous(std::numeric_limits<typename T::value_type>::infinity());
         using factor = typename integrator_detail::newton_factor<M>::type;
-        std::optional<factor> newton;  // ∂F/∂s₁, factored
-        for (int i = 0; i < max_iterations; ++i) {
+        std::optional<factor> newton;
+        mask done = T(0) != T(0), failed = done;  // no lane yet
+        int i = 0;
+        for (; i < max_iterations && !all(done || failed); ++i) {
             const screw_t s_m(T(1) / T(2) * (x.s + s1));
             const auto g_m = midpoint_pose(s_m, T(1) / T(2));
-            screw_t next(x.s + h * model.acceleration(g_m, s_m));  // the fixed-point update
+            screw_t next(x.s + h * model.acceleration(g_m, s_m));
             if constexpr (integrator_detail::with_acceleration_jacobian<M> || integrator_detail::with_acceleration_partials<M>) {
                 if (solver == implicit_solver::newton) {
-                    // Newton: ∂F/∂s₁ Δ = s₀ + h a − s₁ = next − s₁, the matrix taken at the first
-                    // midpoint and factored once (a simplified Newton method: it moves by O(h)
-                    // within the step), and taken again where an update contracts by less than ½
-                    if (!newton) {
-                        newton.emplace(integrator_detail::newton_matrix(model, g_m, s_m, h));
-                        if (newton->singular) break;
-                    }
-                    std::array<T, factor::size> residual{};
+                    if (!newton) newton.emplace(integrator_detail::newton_matrix(model, g_m, s_m, h));
+                    std::array<T, factor::size> residual;
                     for (std::size_t r = 0; r < residual.size(); ++r) residual[r] = next[r] - s1[r];
                     const auto delta = newton->solve(residual);
                     for (std::size_t r = 0; r < residual.size(); ++r) next[r] = s1[r] + delta[r];
                 }
             }
-            if (!model.finite(x.g, next)) break;  // the iteration diverged
             const T change = model.magnitude(screw_t(next - s1));
             const T scale = model.magnitude(next) + model.magnitude(x.s);
-            s1 = next;
-            if (change <= eps * scale || (change >= previous && change <= T(1024) * eps * scale)) {
-                if (iterations) *iterations += i + 1;
-                const screw_t s_mid(T(1) / T(2) * (x.s + s1));
-                state_of<M> y{midpoint_pose(s_mid, T(1)), s1};
-                if (renormalize) y.g = model.renormalize(y.g);
-                return {y, error_code::none};
-            }
-            // a slow contraction: the matrix of the first midpoint no longer fits; take it anew
-            if (change > previous / T(2)) newton.reset();
-            previous = change;
+            failed = failed || (!done && !finite_lanes(change + scale));  // (magnitude keeps a NaN)
+            const mask iterating = !(done || failed);
+            s1 = select(iterating, next, s1);
+            const mask converged =
+                iterating && (change <= eps * scale || (change >= previous && change <= T(1024) * eps * scale));
+            done = done || converged;
+            if (any(iterating && !converged && change > previous / T(2))) newton.reset();
+            previous = select(iterating, change, previous);
         }
-        if (iterations) *iterations += max_iterations;
-        return {x, error_code::did_not_converge};
+        if (iterations) *iterations += i;
+        const screw_t s_mid(T(1) / T(2) * (x.s + s1));
+        state_of<M> y{midpoint_pose(s_mid, T(1)), s1};
+        if (renormalize) y.g = model.renormalize(y.g);
+        error_of_t<T> e;
+        for (std::size_t l = 0; l < T::size; ++l) e[l] = done[l] ? error_code::none : error_code::did_not_converge;
+        return {{select(done, y.g, x.g), select(done, y.s, x.s)}, e};
     }
 };
 

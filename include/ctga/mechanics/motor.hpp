@@ -138,23 +138,48 @@ template <class T>
 // It is not the nearest point of R⁸ in the unweighted metric |Δα|² + |Δβ|²: that point mixes
 // units (β carries a length) and would rotate the body to repair a translation defect.
 // Scaling g by the largest |αi| first keeps |α|² from overflowing or underflowing.
+namespace renormalize_detail {
+// g / m, then α̂ and β/|α| with β's component along α̂ removed (m > 0: g's largest |αi|)
 template <class T>
-[[nodiscard]] constexpr checked<motor<T>> renormalize_checked(const motor<T>& g) noexcept {
-    if (!all_finite(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7])) return {motor<T>{}, error_code::non_finite};
-    T m = T(0);
-    for (int i = 0; i < 4; ++i) {
-        const T a = g[i] < T(0) ? -g[i] : g[i];
-        if (a > m) m = a;
-    }
-    if (!(m > T(0))) return {motor<T>{}, error_code::not_a_motor};
-    T x[8];
+[[nodiscard]] constexpr std::array<T, 8> scaled(const motor<T>& g, const T& m) noexcept {
+    std::array<T, 8> x;
     for (int i = 0; i < 8; ++i) x[i] = g[i] / m;  // the result is invariant under g → λg, λ > 0
     const T n = math::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);  // in [1, 2]
     for (int i = 0; i < 8; ++i) x[i] /= n;  // α̂ and β/|α|
     const T d = x[0] * x[4] + x[1] * x[5] + x[2] * x[6] + x[3] * x[7];  // α̂·β/|α|
     for (int i = 0; i < 4; ++i) x[4 + i] -= d * x[i];
-    if (!all_finite(x[4], x[5], x[6], x[7])) return {motor<T>{}, error_code::not_a_motor};
-    return {motor<T>{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]}, error_code::none};
+    return x;
+}
+}  // namespace renormalize_detail
+
+template <class T>
+[[nodiscard]] constexpr checked<motor<T>, error_of_t<T>> renormalize_checked(const motor<T>& g) noexcept {
+    if constexpr (lane_wise<T>) {
+        // packs: every lane renormalised; a lane with a NaN or infinity, or a zero rotor part,
+        // reports it (non_finite, not_a_motor) and its numbers are NaN
+        T m = T(0);
+        auto finite = finite_lanes(g[0]);
+        for (int i = 0; i < 8; ++i) finite = finite && finite_lanes(g[i]);
+        for (int i = 0; i < 4; ++i) m = select(abs(g[i]) > m, abs(g[i]), m);
+        const auto rotor = m > T(0);
+        const T nan(std::numeric_limits<typename T::value_type>::quiet_NaN());
+        const auto x = renormalize_detail::scaled(g, select(finite && rotor, m, nan));
+        error_of_t<T> e;
+        for (std::size_t l = 0; l < T::size; ++l)
+            e[l] = !finite[l] ? error_code::non_finite : !rotor[l] ? error_code::not_a_motor : error_code::none;
+        return {motor<T>{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]}, e};
+    } else {
+        if (!all_finite(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7])) return {motor<T>{}, error_code::non_finite};
+        T m = T(0);
+        for (int i = 0; i < 4; ++i) {
+            const T a = g[i] < T(0) ? -g[i] : g[i];
+            if (a > m) m = a;
+        }
+        if (!(m > T(0))) return {motor<T>{}, error_code::not_a_motor};
+        const auto x = renormalize_detail::scaled(g, m);
+        if (!all_finite(x[4], x[5], x[6], x[7])) return {motor<T>{}, error_code::not_a_motor};
+        return {motor<T>{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]}, error_code::none};
+    }
 }
 
 // renormalize_checked for a g known to be a drifted motor. Asserts in debug builds when it is
@@ -162,7 +187,8 @@ template <class T>
 // that the failure shows in every later result instead of passing for a rigid motion.
 template <class T>
 [[nodiscard]] constexpr motor<T> renormalize(const motor<T>& g) noexcept {
-    return value_or_nan(renormalize_checked(g));
+    if constexpr (lane_wise<T>) return renormalize_checked(g).value;  // (a failed lane's numbers are NaN)
+    else return value_or_nan(renormalize_checked(g));
 }
 
 // ---- the linear map of a motor (§2) ------------------------------------------------------
@@ -299,7 +325,7 @@ struct sinc_c {
 // sinc φ and c(φ) for φ ≥ 0 given with φ² (exact at φ = 0: 1 and −1/3).
 template <class T>
 [[nodiscard]] constexpr sinc_c<T> sinc_and_c(const T& phi, const T& phi2) noexcept {
-    if (phi < T(1)) {
+    const auto series = [&] {
         // u_n = (−1)ⁿ φ^{2n−2}/(2n+1)!: sinc = 1 + φ² Σ u_n, c = Σ 2n u_n. At φ < 1 the terms
         // fall below 1/(2n+1)!, 1/25! ≈ 6e-26 at n = 12.
         T u = T(-1) / T(6);
@@ -309,10 +335,19 @@ template <class T>
             cu += T(2 * n) * u;
             u *= -phi2 / T((2 * n + 2) * (2 * n + 3));
         }
-        return {T(1) + phi2 * su, cu};
+        return sinc_c<T>{T(1) + phi2 * su, cu};
+    };
+    const auto closed = [&] {
+        const T s = math::sin(phi) / phi;
+        return sinc_c<T>{s, (math::cos(phi) - s) / phi2};  // no cancellation at φ ≥ 1: cos φ − sinc φ ≤ −0.30
+    };
+    if constexpr (lane_wise<T>) {  // packs: both, each lane taking its own (the closed form's 0/0 at φ = 0 unused)
+        const auto small = phi < T(1);
+        const sinc_c<T> a = series(), b = closed();
+        return {select(small, a.sinc, b.sinc), select(small, a.c, b.c)};
+    } else {
+        return phi < T(1) ? series() : closed();
     }
-    const T s = math::sin(phi) / phi;
-    return {s, (math::cos(phi) - s) / phi2};  // no cancellation at φ ≥ 1: cos φ − sinc φ ≤ −0.30
 }
 
 }  // namespace motor_detail

@@ -11,6 +11,7 @@
 // failed check is a logic error; it asserts in debug builds.
 #pragma once
 
+#include <array>
 #include <cassert>
 #include <cstddef>
 #include <limits>
@@ -68,14 +69,38 @@ enum class error_code : unsigned char {
     return "ctga: unknown error";
 }
 
-template <class V>
+// The error of each lane of a pack of L robots (support/pack.hpp): lane l failed with lane[l].
+template <std::size_t L>
+struct lane_errors {
+    std::array<error_code, L> lane{};  // none in every lane
+
+    [[nodiscard]] constexpr const error_code& operator[](std::size_t l) const noexcept { return lane[l]; }
+    [[nodiscard]] constexpr error_code& operator[](std::size_t l) noexcept { return lane[l]; }
+    friend constexpr bool operator==(const lane_errors&, const lane_errors&) = default;
+};
+
+// What a computation in scalar type T reports: one error_code, or one per lane for a pack.
+template <class T>
+struct error_of {
+    using type = error_code;
+};
+template <lane_wise T>
+struct error_of<T> {
+    using type = lane_errors<T::size>;
+};
+template <class T>
+using error_of_t = typename error_of<T>::type;
+
+// A value and what went wrong: E is error_code, or lane_errors<L> for a value made of packs
+// (each lane its own robot; the failed lanes' values are meaningless, the others' valid).
+template <class V, class E = error_code>
 struct checked {
     V value{};
-    error_code error = error_code::none;
+    E error{};  // error_code::none (in every lane)
 
-    [[nodiscard]] constexpr explicit operator bool() const noexcept { return error == error_code::none; }
+    [[nodiscard]] constexpr explicit operator bool() const noexcept { return error == E{}; }
     [[nodiscard]] constexpr const V& operator*() const noexcept {
-        assert(error == error_code::none && "ctga: reading the value of a failed check");
+        assert(error == E{} && "ctga: reading the value of a failed check");
         return value;
     }
     [[nodiscard]] constexpr const V* operator->() const noexcept { return &**this; }

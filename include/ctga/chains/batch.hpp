@@ -37,16 +37,15 @@
 namespace ctga::chains {
 
 namespace batch_detail {
-// x with every pack replaced by its lane l: a number, or an array of them (nested: a matrix).
+// out = x with every pack replaced by its lane l: a number, or an array of them (nested: a
+// matrix), written in place (no temporary of the robot's size)
 template <class T, std::size_t L>
-constexpr T lane_of(const pack<T, L>& x, std::size_t l) noexcept {
-    return x[l];
+constexpr void get_lane(T& out, const pack<T, L>& x, std::size_t l) noexcept {
+    out = x[l];
 }
-template <class X, std::size_t K>
-constexpr auto lane_of(const std::array<X, K>& x, std::size_t l) noexcept {
-    std::array<decltype(lane_of(x[0], l)), K> out;
-    for (std::size_t k = 0; k < K; ++k) out[k] = lane_of(x[k], l);
-    return out;
+template <class Y, class X, std::size_t K>
+constexpr void get_lane(std::array<Y, K>& out, const std::array<X, K>& x, std::size_t l) noexcept {
+    for (std::size_t k = 0; k < K; ++k) get_lane(out[k], x[k], l);
 }
 template <class T, std::size_t L>
 constexpr void set_lane(pack<T, L>& x, std::size_t l, const T& v) noexcept {
@@ -84,7 +83,7 @@ template <std::size_t L, class Robots, class Member>
 template <std::size_t L, class X, class Robots, class Member>
 constexpr void store(const X& x, Robots& robots, std::size_t first, Member member) noexcept {
     const std::size_t n = std::size(robots);
-    for (std::size_t l = 0; l < L && first + l < n; ++l) std::invoke(member, robots[first + l]) = batch_detail::lane_of(x, l);
+    for (std::size_t l = 0; l < L && first + l < n; ++l) batch_detail::get_lane(std::invoke(member, robots[first + l]), x, l);
 }
 
 // f(first) for first = 0, L, 2L, … < n: every pack of a batch of n robots, the last one

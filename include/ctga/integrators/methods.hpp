@@ -22,6 +22,7 @@
 #include <limits>
 #include <optional>
 #include <tuple>
+#include <type_traits>
 #include <utility>
 
 #include "ctga/integrators/model.hpp"
@@ -240,6 +241,47 @@ struct newton_factor<M, true> {
 };
 }  // namespace integrator_detail
 
+namespace integrator_detail {
+// The implicit midpoint's tests for a scalar (a bool) and for packs (lane masks, pack.hpp).
+template <class T>
+struct number {
+    using type = T;
+};
+template <lane_wise T>
+struct number<T> {
+    using type = typename T::value_type;
+};
+template <class T>
+using number_of = typename number<T>::type;  // the scalar of one lane
+template <class V>
+[[nodiscard]] constexpr V choose(bool m, const V& a, const V& b) {
+    return m ? a : b;
+}
+template <class M, class V>
+    requires(!std::is_same_v<M, bool>)
+[[nodiscard]] constexpr V choose(const M& m, const V& a, const V& b) {
+    return select(m, a, b);
+}
+[[nodiscard]] constexpr bool all_of(bool m) noexcept { return m; }
+[[nodiscard]] constexpr bool any_of(bool m) noexcept { return m; }
+template <class M>
+[[nodiscard]] constexpr bool all_of(const M& m) noexcept {
+    return all(m);
+}
+template <class M>
+[[nodiscard]] constexpr bool any_of(const M& m) noexcept {
+    return any(m);
+}
+// The update is finite: the model's test for a scalar; for packs lane by lane, through the
+// magnitudes' sum (a lane's magnitude is NaN when a component is not finite: chains/motion.hpp)
+template <motion_model M>
+[[nodiscard]] constexpr auto finite_update(const M& model, const state_of<M>& x, const typename M::screw_type& next,
+                                           const typename M::scalar_type& magnitudes) {
+    if constexpr (lane_wise<typename M::scalar_type>) return finite_lanes(magnitudes);
+    else return model.finite(x.g, next);
+}
+}  // namespace integrator_detail
+
 // How the implicit midpoint solves its equation for s₁.
 enum class implicit_solver {
     newton,       // Newton's method with the model's exact ∂a/∂s (ctga::jacobian of the EOM; a
@@ -266,89 +308,42 @@ struct implicit_midpoint {
     implicit_solver solver = implicit_solver::newton;
     long* iterations = nullptr;
 
+    // One iteration for a scalar and for packs (one robot per lane): every test is a mask, a bool
+    // for a scalar. A lane stops when its own update is small and keeps its s₁ from then on; the
+    // Newton matrix is taken again when a lane still iterating contracts by less than ½ (so a
+    // lane may take other iterates than its scalar run: the two s₁ agree to the stopping
+    // tolerance). A lane whose iterate is not finite, or that has not converged after
+    // max_iterations, reports did_not_converge and keeps its initial state.
     template <motion_model M>
     [[nodiscard]] constexpr step_result<M> step(const M& model, const state_of<M>& x,
-                                                      const typename M::scalar_type& h) const {
+                                                const typename M::scalar_type& h) const {
+        using namespace integrator_detail;
         using T = typename M::scalar_type;
         using screw_t = typename M::screw_type;
-        if constexpr (lane_wise<T>) return step_lanes(model, x, h);
-        else {
-            constexpr T eps = std::numeric_limits<T>::epsilon();
-            const auto midpoint_pose = [&](const screw_t& s_m, const T& c) {
-                return advance_pose(model, x.g, screw_t(c * h * s_m));
-            };
-            screw_t s1(x.s + h * model.acceleration(x.g, x.s));
-            T previous = std::numeric_limits<T>::infinity();
-            using factor = typename integrator_detail::newton_factor<M>::type;
-            std::optional<factor> newton;  // ∂F/∂s₁, factored
-            for (int i = 0; i < max_iterations; ++i) {
-                const screw_t s_m(T(1) / T(2) * (x.s + s1));
-                const auto g_m = midpoint_pose(s_m, T(1) / T(2));
-                screw_t next(x.s + h * model.acceleration(g_m, s_m));  // the fixed-point update
-                if constexpr (integrator_detail::with_acceleration_jacobian<M> || integrator_detail::with_acceleration_partials<M>) {
-                    if (solver == implicit_solver::newton) {
-                        // Newton: ∂F/∂s₁ Δ = s₀ + h a − s₁ = next − s₁, the matrix taken at the first
-                        // midpoint and factored once (a simplified Newton method: it moves by O(h)
-                        // within the step), and taken again where an update contracts by less than ½
-                        if (!newton) {
-                            newton.emplace(integrator_detail::newton_matrix(model, g_m, s_m, h));
-                            if (newton->singular) break;
-                        }
-                        std::array<T, factor::size> residual{};
-                        for (std::size_t r = 0; r < residual.size(); ++r) residual[r] = next[r] - s1[r];
-                        const auto delta = newton->solve(residual);
-                        for (std::size_t r = 0; r < residual.size(); ++r) next[r] = s1[r] + delta[r];
-                    }
-                }
-                if (!model.finite(x.g, next)) break;  // the iteration diverged
-                const T change = model.magnitude(screw_t(next - s1));
-                const T scale = model.magnitude(next) + model.magnitude(x.s);
-                s1 = next;
-                if (change <= eps * scale || (change >= previous && change <= T(1024) * eps * scale)) {
-                    if (iterations) *iterations += i + 1;
-                    const screw_t s_mid(T(1) / T(2) * (x.s + s1));
-                    state_of<M> y{midpoint_pose(s_mid, T(1)), s1};
-                    if (renormalize) y.g = model.renormalize(y.g);
-                    return {y, {}};
-                }
-                // a slow contraction: the matrix of the first midpoint no longer fits; take it anew
-                if (change > previous / T(2)) newton.reset();
-                previous = change;
-            }
-            if (iterations) *iterations += max_iterations;
-            return {x, error_code::did_not_converge};
-        }
-    }
-
-private:
-    // The same iteration lane by lane, for a model in packs (one robot per lane): a lane stops
-    // when its own update is small and keeps its s₁ from then on; the Newton matrix is taken again
-    // when a lane still iterating contracts by less than ½ (so a lane may take other iterates than
-    // its scalar run: the two s₁ agree to the stopping tolerance). A lane whose iterate is not
-    // finite, or that has not converged after max_iterations, reports did_not_converge and keeps
-    // its initial state; the others are stepped.
-    template <motion_model M>
-    [[nodiscard]] constexpr step_result<M> step_lanes(const M& model, const state_of<M>& x, const typename M::scalar_type& h) const {
-        using T = typename M::scalar_type;
-        using screw_t = typename M::screw_type;
-        using mask = typename T::mask;
-        const T eps(std::numeric_limits<typename T::value_type>::epsilon());
+        using mask = decltype(T(0) < T(0));  // bool, or a pack's lanes
+        const T eps(std::numeric_limits<number_of<T>>::epsilon());
         const auto midpoint_pose = [&](const screw_t& s_m, const T& c) {
             return advance_pose(model, x.g, screw_t(c * h * s_m));
         };
         screw_t s1(x.s + h * model.acceleration(x.g, x.s));
-        T previous(std::numeric_limits<typename T::value_type>::infinity());
-        using factor = typename integrator_detail::newton_factor<M>::type;
-        std::optional<factor> newton;
+        T previous(std::numeric_limits<number_of<T>>::infinity());
+        using factor = typename newton_factor<M>::type;
+        std::optional<factor> newton;  // ∂F/∂s₁, factored
         mask done = T(0) != T(0), failed = done;  // no lane yet
         int i = 0;
-        for (; i < max_iterations && !all(done || failed); ++i) {
+        for (; i < max_iterations && !all_of(done || failed); ++i) {
             const screw_t s_m(T(1) / T(2) * (x.s + s1));
             const auto g_m = midpoint_pose(s_m, T(1) / T(2));
-            screw_t next(x.s + h * model.acceleration(g_m, s_m));
-            if constexpr (integrator_detail::with_acceleration_jacobian<M> || integrator_detail::with_acceleration_partials<M>) {
+            screw_t next(x.s + h * model.acceleration(g_m, s_m));  // the fixed-point update
+            if constexpr (with_acceleration_jacobian<M> || with_acceleration_partials<M>) {
                 if (solver == implicit_solver::newton) {
-                    if (!newton) newton.emplace(integrator_detail::newton_matrix(model, g_m, s_m, h));
+                    // Newton: ∂F/∂s₁ Δ = s₀ + h a − s₁ = next − s₁, the matrix taken at the first
+                    // midpoint and factored once (a simplified Newton method: it moves by O(h)
+                    // within the step), and taken again where an update contracts by less than ½
+                    if (!newton) {
+                        newton.emplace(newton_matrix(model, g_m, s_m, h));
+                        if (newton->singular) break;  // (packs are not pivoted: never singular)
+                    }
                     std::array<T, factor::size> residual;
                     for (std::size_t r = 0; r < residual.size(); ++r) residual[r] = next[r] - s1[r];
                     const auto delta = newton->solve(residual);
@@ -357,22 +352,27 @@ private:
             }
             const T change = model.magnitude(screw_t(next - s1));
             const T scale = model.magnitude(next) + model.magnitude(x.s);
-            failed = failed || (!done && !finite_lanes(change + scale));  // (magnitude keeps a NaN)
+            failed = failed || (!done && !finite_update(model, x, next, change + scale));  // it diverged
             const mask iterating = !(done || failed);
-            s1 = select(iterating, next, s1);
+            s1 = choose(iterating, next, s1);
             const mask converged =
                 iterating && (change <= eps * scale || (change >= previous && change <= T(1024) * eps * scale));
             done = done || converged;
-            if (any(iterating && !converged && change > previous / T(2))) newton.reset();
-            previous = select(iterating, change, previous);
+            // a slow contraction: the matrix of the first midpoint no longer fits; take it anew
+            if (any_of(iterating && !converged && change > previous / T(2))) newton.reset();
+            previous = choose(iterating, change, previous);
         }
         if (iterations) *iterations += i;
         const screw_t s_mid(T(1) / T(2) * (x.s + s1));
         state_of<M> y{midpoint_pose(s_mid, T(1)), s1};
         if (renormalize) y.g = model.renormalize(y.g);
-        error_of_t<T> e;
-        for (std::size_t l = 0; l < T::size; ++l) e[l] = done[l] ? error_code::none : error_code::did_not_converge;
-        return {{select(done, y.g, x.g), select(done, y.s, x.s)}, e};
+        error_of_t<T> e{};
+        if constexpr (lane_wise<T>) {
+            for (std::size_t l = 0; l < T::size; ++l) e[l] = done[l] ? error_code::none : error_code::did_not_converge;
+        } else {
+            e = done ? error_code::none : error_code::did_not_converge;
+        }
+        return {{choose(done, y.g, x.g), choose(done, y.s, x.s)}, e};
     }
 };
 

@@ -14,7 +14,7 @@ cd "$root"
 export BUILD_DIR=${BUILD_DIR:-$root/build}
 
 bash tools/deps.sh valgrind python3-matplotlib libmujoco-dev
-bash tools/configure.sh
+bash tools/configure.sh -DCTGA_BUILD_BENCHMARKS=ON
 cmake --build "$BUILD_DIR" --target ctga_bench -j"$(nproc)"
 out=$BUILD_DIR/bench
 mkdir -p "$out" docs/img

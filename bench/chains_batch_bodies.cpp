@@ -1,9 +1,9 @@
 // ctga_batch_bench's single bodies: 10,000 identical free bodies (inertia_kind::diagonal,
-// subspace::full) stepped by classical RK4 with renormalisation, as scenes/batch.hpp steps them
-// (batch_bodies/soa: its structure-of-arrays loops, vectorised by the compiler) and as packs of
-// bodies (batch_bodies/pack<L>: ctga::rk4{}.step on body_motion<pack<double, L>>, one pack of L
-// bodies after another; every lane the numbers of the double step). Reported: the time per
-// body-step (per_body_step).
+// subspace::full) stepped by classical RK4 with renormalisation, in scenes/batch.hpp
+// (batch_bodies/soa: structure of arrays, stepped in packs of this build's width) and as
+// hand-made packs of bodies (batch_bodies/pack<L>: ctga::rk4{}.step on body_motion<pack<double,
+// L>>, one array of pack states; every lane the numbers of the double step). Reported: the time
+// per body-step (per_body_step).
 #include <memory>
 #include <random>
 #include <string>

@@ -13,13 +13,19 @@
 //     floating base, each lane against ctga::integrate of its robot alone; a robot too fast for
 //     the fixed-point iteration (did_not_converge) and one with a NaN (non_finite) stop there,
 //     the others run all their steps.
-// PARTS: 6
+//   - Frames by name (chains::frame<"tool">, and find_frame / visit_frame at run time): pose,
+//     velocity, accelerations and Jacobian, lane against robot; checked_call on packs reports
+//     each lane's failure (lane_errors) and keeps the other lanes' results.
+// PARTS: 7
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
 #include <random>
+#include <tuple>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <ctga/chains/algorithms.hpp>
@@ -263,6 +269,97 @@ void check_rollout(const Method& method, std::uint64_t seed, std::size_t n, bool
     }
 }
 
+// A floating base, turning and sliding joints and named frames on a body, on the base and on the
+// world.
+using framed_tree = ch::tree<ch::link<-1, ch::floating>, ch::link<0, ch::revolute_z>, ch::link<1, ch::revolute_about>,
+                             ch::link<2, ch::prismatic_x>, ch::fixed_frame<"tool", 3>, ch::fixed_frame<"imu", 0>,
+                             ch::fixed_frame<"map", -1>>;
+
+// Frames by name (in the source and through find_frame at run time), lane against robot.
+template <std::size_t L>
+void compare_frames(std::uint64_t seed) {
+    using Tree = framed_tree;
+    using P = pack<double, L>;
+    lanes_of<Tree, L> x(seed);
+    std::mt19937_64 rng(seed + 1);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (std::size_t f = 0; f < Tree::frame_count; ++f) {
+        const auto g = ctga::renormalize(ctga::motor<double>{1 + u(rng), u(rng), u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)});
+        const auto placed = ch::make_frame(g);
+        REQUIRE(placed);
+        x.d.m.frames[f] = *placed;
+    }
+    x.mp = ch::model_cast<P>(x.d.m);
+    const ch::model<Tree>& m = x.d.m;
+    const ch::kinematics<Tree, P> k = ch::forward_kinematics(x.mp, x.q, x.qd, x.qdd);
+    const auto numbers = [](const auto& model, const auto& kin, const auto& q, auto f) {
+        return std::tuple{ch::frame_pose(model, kin, f),
+                          ch::frame_velocity(model, kin, f, ch::reference::local),
+                          ch::frame_velocity(model, kin, f, ch::reference::world),
+                          ch::frame_acceleration(model, kin, f, ch::reference::local_world_aligned),
+                          ch::frame_classical_acceleration(model, kin, f, ch::reference::world),
+                          ch::frame_jacobian(model, q, f, ch::reference::local)};
+    };
+    const std::size_t imu = *Tree::find_frame("imu");
+    const auto tool = numbers(x.mp, k, x.q, ch::frame<"tool">);
+    const auto on_base = ch::visit_frame<Tree>(imu, [&](auto f) { return numbers(x.mp, k, x.q, f); });
+    const auto world = numbers(x.mp, k, x.q, ch::frame<"map">);
+    for (std::size_t l = 0; l < L; ++l) {
+        INFO("lanes " << L << ", lane " << l);
+        const robot<Tree>& r = x.robots[l];
+        const ch::kinematics<Tree> k_l = ch::forward_kinematics(m, r.q, r.qd, r.qdd);
+        const auto tool_l = numbers(m, k_l, r.q, ch::frame<"tool">);
+        const auto on_base_l = ch::visit_frame<Tree>(imu, [&](auto f) { return numbers(m, k_l, r.q, f); });
+        const auto world_l = numbers(m, k_l, r.q, ch::frame<"map">);
+        const auto worst = [&](const auto& a, const auto& b) {
+            return std::apply([&](const auto&... x) {
+                return std::apply([&](const auto&... y) { return std::max({lane_error(x, y, l)...}); }, b);
+            }, a);
+        };
+        CHECK(worst(tool, tool_l) <= 1e-14);
+        CHECK(worst(on_base, on_base_l) <= 1e-14);
+        CHECK(worst(world, world_l) <= 1e-14);
+    }
+}
+
+// checked_call on packs: every lane checked on its own. Lane 1 has a NaN in q, lane 2 a floating
+// base with a zero rotor part, lane 3 a NaN in q̈; lane 0 a NaN in its lane of the model's
+// gravity. The other lanes' results are the double checked_call's.
+template <std::size_t L>
+void check_checked_call(std::uint64_t seed) {
+    static_assert(L >= 6);
+    using Tree = framed_tree;
+    lanes_of<Tree, L> x(seed);
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    x.q[Tree::nq - 1].set(1, nan);
+    for (std::size_t c = 0; c < 4; ++c) x.q[c].set(2, 0);
+    x.qdd[0].set(3, nan);
+    x.mp.gravity[2].set(0, nan);
+    const auto healthy = ch::checked_call(ch::rnea, ch::model_cast<pack<double, L>>(x.d.m), x.q, x.qd, x.qdd);
+    const auto tau = ch::checked_call(ch::rnea, x.mp, x.q, x.qd, x.qdd);
+    static_assert(std::is_same_v<std::remove_cvref_t<decltype(tau.error)>, ctga::lane_errors<L>>);
+    for (std::size_t l = 0; l < L; ++l) {
+        INFO("lane " << l);
+        const ctga::error_code expected = l == 0 || l == 1 || l == 3 ? ctga::error_code::non_finite
+                                          : l == 2                   ? ctga::error_code::not_a_motor
+                                                                     : ctga::error_code::none;
+        CHECK(tau.error[l] == expected);
+        CHECK(healthy.error[l] == (l == 1 || l == 3 ? ctga::error_code::non_finite
+                                   : l == 2         ? ctga::error_code::not_a_motor
+                                                    : ctga::error_code::none));
+        const robot<Tree>& r = x.robots[l];
+        if (expected == ctga::error_code::none) {
+            const auto one = ch::checked_call(ch::rnea, x.d.m, r.q, r.qd, r.qdd);
+            REQUIRE(one);
+            CHECK(lane_error(tau.value, *one, l) <= 1e-14);
+        }
+    }
+    // the scalar form reports the same way
+    ch::configuration<Tree> q = x.robots[2].q;
+    for (std::size_t c = 0; c < 4; ++c) q[c] = 0;
+    CHECK(ch::checked_call(ch::rnea, x.d.m, q, x.robots[2].qd, x.robots[2].qdd).error == ctga::error_code::not_a_motor);
+}
+
 }  // namespace
 
 #define PACKS_CASE(name) TEST_CASE("chains on packs: " name CTGA_TEST_PART_NAME)
@@ -302,3 +399,10 @@ PACKS_CASE("batch_integrate: lie_rk4 and the implicit midpoint lane by lane, a d
     check_rollout<Tree, 4>(ctga::implicit_midpoint{.solver = ctga::implicit_solver::fixed_point}, 60, 6, true, 1e-12);
 }
 #endif
+#if CTGA_TEST_PART_HOLDS(6)
+PACKS_CASE("frames by name and checked_call on packs, lane by lane") {
+    compare_frames<4>(61);
+    check_checked_call<8>(62);
+}
+#endif
+

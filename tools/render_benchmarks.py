@@ -306,13 +306,15 @@ def main():
     if any(("body_step", k) in t for k in kinds):
         lines += ["## Scenes: what a body kind pays", "",
                   "One RK4 step of one body (`bench/kinds.cpp`; engine counts per rate evaluation in",
-                  "`docs/design.md` §9), and 10 000 identical bodies stepped in the structure-of-arrays batch",
-                  "against a loop over an array of states (`bench/batch.cpp`, body-steps per second).", "",
+                  "`docs/design.md` §9), and 10 000 identical bodies stepped in the batch (`scenes/batch.hpp`:",
+                  "structure of arrays, SIMD packs of the build's width, 2 doubles in this SSE2 build; and the",
+                  "same loop one body at a time) against a loop over an array of states (`bench/batch.cpp`,",
+                  "body-steps per second).", "",
                   "| body kind | RK4 step |", "| --- | --- |"]
         lines += [f"| {k.replace('_', ', ')} | {fmt_time(t.get(('body_step', k)))} |" for k in kinds]
         _, rate = medians(results, "items_per_second")
-        pairs = [("full, diagonal", "soa", "soa_fast", "aos"), ("planar, diagonal", "soa_planar", "soa_planar_fast", "aos_planar")]
-        lines += ["", "| batch of 10 000 | SoA | SoA, fast renormalisation | array of structures | SoA / AoS |",
+        pairs = [("full, diagonal", "soa", "soa_lanes1", "aos"), ("planar, diagonal", "soa_planar", "soa_planar_lanes1", "aos_planar")]
+        lines += ["", "| batch of 10 000 | batch, packs | batch, 1 lane | array of structures | packs / AoS |",
                   "| --- | --- | --- | --- | --- |"]
         for name, a, b, c in pairs:
             ra, rb, rc = (rate.get(("batch_step", x)) for x in (a, b, c))

@@ -55,6 +55,15 @@ template <class X, class Y, std::size_t K>
 constexpr void set_lane(std::array<X, K>& x, std::size_t l, const std::array<Y, K>& v) noexcept {
     for (std::size_t k = 0; k < K; ++k) set_lane(x[k], l, v[k]);
 }
+// x's first number: a pack (x a pack, or nested std::arrays of packs)
+template <class X>
+constexpr const X& first_number(const X& x) noexcept {
+    return x;
+}
+template <class X, std::size_t K>
+constexpr const auto& first_number(const std::array<X, K>& x) noexcept {
+    return first_number(x[0]);
+}
 // The same structure with pack<T, L> for every number T (std::array nests).
 template <class X, std::size_t L>
 struct packed {
@@ -64,6 +73,73 @@ template <class X, std::size_t K, std::size_t L>
 struct packed<std::array<X, K>, L> {
     using type = std::array<typename packed<X, L>::type, K>;
 };
+
+// Numbers of L robots, K each (nested std::arrays of T, contiguous), to and from K packs, L
+// numbers at a time: L rows of L numbers (one vector load each), transposed in registers (log2 L
+// stages of interleaves), one vector store each; the last K mod L numbers lane by lane. (Lane by
+// lane, a pack's number is an extract and a scalar store: the tree's CRBA in 8 lanes spent more
+// time storing H than computing it.)
+template <class T, class X>
+inline constexpr std::size_t count_of = sizeof(X) / sizeof(T);  // the numbers of X (nested arrays of T)
+template <class X, class T>
+inline constexpr bool flat_numbers = false;  // X is T or nested std::arrays of T: contiguous, no padding
+template <class T>
+inline constexpr bool flat_numbers<T, T> = true;
+template <class X, std::size_t K, class T>
+inline constexpr bool flat_numbers<std::array<X, K>, T> = flat_numbers<X, T> && sizeof(std::array<X, K>) == K * sizeof(X);
+
+// rows r[0 … L): afterwards r[j] lane e is the former r[e] lane j. Transposing swaps each bit of
+// the row index with that bit of the lane index. The first stage interleaves rows i and i + 1
+// (bit 0; unpcklpd/unpckhpd); every further stage, pairing rows i and i + H (H = 2, 4, …),
+// gathers the even pairs of lanes of both rows into row i and the odd pairs into row i + H,
+// which moves row bit H to the top lane bit and shifts the lane bits above bit 0 down, so after
+// the last stage every bit has been swapped (one 128-bit-chunk shuffle each, vshuff64x2, where a
+// general two-row permute would be slower).
+template <std::size_t H, class V, std::size_t L, std::size_t... E>
+CTGA_ALWAYS_INLINE void transpose(std::array<V, L>& r, std::index_sequence<E...> lanes) noexcept {
+    // lane E of the new row i (Odd = 0) or i + H (Odd = 1), as an index into (row i, row i + H)
+    constexpr auto from = [](std::size_t e, std::size_t odd) {
+        if constexpr (H == 1) {
+            return (e & 1) ? L + e - 1 + odd : e + odd;
+        } else {
+            const std::size_t pair = e / 2, source = pair < L / 4 ? 0 : L;
+            return source + 2 * (2 * (pair % (L / 4)) + odd) + e % 2;
+        }
+    };
+    for (std::size_t block = 0; block < L; block += 2 * H)
+        for (std::size_t i = block; i < block + H; ++i) {
+            const V a = r[i], b = r[i + H];
+            r[i] = __builtin_shufflevector(a, b, from(E, 0)...);
+            r[i + H] = __builtin_shufflevector(a, b, from(E, 1)...);
+        }
+    if constexpr (2 * H < L) transpose<2 * H>(r, lanes);
+}
+template <class T, std::size_t L, std::size_t K>
+CTGA_ALWAYS_INLINE void gather(pack<T, L>* out, const std::array<const T*, L>& robot) noexcept {
+    using V = typename pack<T, L>::vector;
+    constexpr std::size_t blocks = K - K % L;
+    for (std::size_t k = 0; k < blocks; k += L) {
+        std::array<V, L> r;
+        for (std::size_t j = 0; j < L; ++j) __builtin_memcpy(&r[j], robot[j] + k, sizeof(V));
+        transpose<1>(r, std::make_index_sequence<L>{});
+        for (std::size_t e = 0; e < L; ++e) out[k + e].v = r[e];
+    }
+    for (std::size_t k = blocks; k < K; ++k)
+        for (std::size_t j = 0; j < L; ++j) out[k].set(j, robot[j][k]);
+}
+template <class T, std::size_t L, std::size_t K>
+CTGA_ALWAYS_INLINE void scatter(const pack<T, L>* x, const std::array<T*, L>& robot) noexcept {
+    using V = typename pack<T, L>::vector;
+    constexpr std::size_t blocks = K - K % L;
+    for (std::size_t k = 0; k < blocks; k += L) {
+        std::array<V, L> r;
+        for (std::size_t e = 0; e < L; ++e) r[e] = x[k + e].v;
+        transpose<1>(r, std::make_index_sequence<L>{});
+        for (std::size_t j = 0; j < L; ++j) __builtin_memcpy(robot[j] + k, &r[j], sizeof(V));
+    }
+    for (std::size_t k = blocks; k < K; ++k)
+        for (std::size_t j = 0; j < L; ++j) robot[j][k] = x[k][j];
+}
 }  // namespace batch_detail
 
 // Robots first … first + L − 1 of `robots` (a random-access range of structures) as packs:
@@ -72,8 +148,19 @@ struct packed<std::array<X, K>, L> {
 template <std::size_t L, class Robots, class Member>
 [[nodiscard]] constexpr auto load(const Robots& robots, std::size_t first, Member member) noexcept {
     using scalar_value = std::remove_cvref_t<decltype(std::invoke(member, robots[0]))>;
-    typename batch_detail::packed<scalar_value, L>::type out;
+    using out_type = typename batch_detail::packed<scalar_value, L>::type;
+    out_type out;
     const std::size_t n = std::size(robots);
+    using T = typename std::remove_cvref_t<decltype(batch_detail::first_number(out))>::value_type;
+    if constexpr (L > 1 && batch_detail::flat_numbers<scalar_value, T> &&
+                  std::is_lvalue_reference_v<decltype(std::invoke(member, robots[0]))>) {
+        if (!std::is_constant_evaluated() && first + L <= n) {
+            std::array<const T*, L> robot;
+            for (std::size_t l = 0; l < L; ++l) robot[l] = reinterpret_cast<const T*>(&std::invoke(member, robots[first + l]));
+            batch_detail::gather<T, L, batch_detail::count_of<T, scalar_value>>(reinterpret_cast<pack<T, L>*>(&out), robot);
+            return out;
+        }
+    }
     for (std::size_t l = 0; l < L; ++l)
         batch_detail::set_lane(out, l, std::invoke(member, robots[first + l < n ? first + l : n - 1]));
     return out;
@@ -83,6 +170,16 @@ template <std::size_t L, class Robots, class Member>
 template <std::size_t L, class X, class Robots, class Member>
 constexpr void store(const X& x, Robots& robots, std::size_t first, Member member) noexcept {
     const std::size_t n = std::size(robots);
+    using scalar_value = std::remove_cvref_t<decltype(std::invoke(member, robots[0]))>;
+    using T = typename std::remove_cvref_t<decltype(batch_detail::first_number(x))>::value_type;
+    if constexpr (L > 1 && batch_detail::flat_numbers<scalar_value, T> && batch_detail::flat_numbers<X, pack<T, L>>) {
+        if (!std::is_constant_evaluated() && first + L <= n) {
+            std::array<T*, L> robot;
+            for (std::size_t l = 0; l < L; ++l) robot[l] = reinterpret_cast<T*>(&std::invoke(member, robots[first + l]));
+            batch_detail::scatter<T, L, batch_detail::count_of<T, scalar_value>>(reinterpret_cast<const pack<T, L>*>(&x), robot);
+            return;
+        }
+    }
     for (std::size_t l = 0; l < L && first + l < n; ++l) batch_detail::get_lane(std::invoke(member, robots[first + l]), x, l);
 }
 
@@ -124,8 +221,8 @@ std::size_t batch_call(const Algorithm& algorithm, const model<Tree, pack<T, L>>
         for (std::size_t i = first; i < first + L && i < n; ++i) {
             auto& r = robots[i];
             error_code e = algorithm_detail::check_configuration<Tree>(std::invoke(q, r));
-            if (e == error_code::none && !(algorithm_detail::finite_all(std::invoke(in, r)) && ...)) e = error_code::non_finite;
-            if (e == error_code::none && !algorithm_detail::finite_all(std::invoke(out, r))) e = error_code::non_finite;
+            if (e == error_code::none && !(algorithm_detail::finite_all<T>(std::invoke(in, r)) && ...)) e = error_code::non_finite;
+            if (e == error_code::none && !algorithm_detail::finite_all<T>(std::invoke(out, r))) e = error_code::non_finite;
             std::invoke(error, r) = e;
         }
     });
@@ -153,7 +250,7 @@ std::size_t batch_integrate(const Method& method, const tree_motion<Tree, pack<T
         for (std::size_t l = 0; l < L && first + l < n; ++l) {
             const auto& r = robots[first + l];
             e[l] = algorithm_detail::check_configuration<Tree>(std::invoke(q, r));
-            if (e[l] == error_code::none && !algorithm_detail::finite_all(std::invoke(qd, r))) e[l] = error_code::non_finite;
+            if (e[l] == error_code::none && !algorithm_detail::finite_all<T>(std::invoke(qd, r))) e[l] = error_code::non_finite;
         }
         const auto running = [&] {
             return P::generate([&](std::size_t l) { return e[l] == error_code::none ? T(0) : T(1); }) == P(T(0));

@@ -10,13 +10,18 @@
 //                 in q, q̇, q̈, τ, the wrenches, or in the result
 //   not_a_motor   a floating joint's configuration with a zero rotor part (no rigid motion)
 // (make_link checked each link's physics when the model was built; a model edited afterwards is
-// checked here for non-finite numbers.)
+// checked here for non-finite numbers.) With packs as the scalar (a model_cast model, L robots)
+// every lane is checked on its own: the error is a lane_errors<L>.
+//
+//   auto tau = chains::checked_call(chains::rnea, lanes, q, qd, qdd);   // checked<…, lane_errors<8>>
+//   if (tau.error[3] != ctga::error_code::none) { /* robot 3's input or result is bad */ }
 #pragma once
 
 #include <array>
 #include <cstddef>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 
 #include <boost/hana/for_each.hpp>
 
@@ -25,63 +30,109 @@
 #include "ctga/chains/tree.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/pack.hpp"
 
 namespace ctga::chains {
 
 namespace algorithm_detail {
-template <class T>
-constexpr bool finite_all(const T& x) noexcept {
-    if constexpr (std::is_arithmetic_v<T>) return is_finite(x);
-    else if constexpr (requires { x.R; x.t; }) return finite_all(x.R) && finite_all(x.t);
-    else if constexpr (requires { x.X; x.pose; x.v; x.a; }) return finite_all(x.X) && finite_all(x.pose) && finite_all(x.v) && finite_all(x.a);
-    else if constexpr (requires { x.links; x.gravity; }) {  // a model: every link's numbers, frames, gravity
-        bool ok = finite_all(x.gravity) && finite_all(x.frames);
+// Whether numbers of type N are finite: a bool, or a pack's lane mask (support/pack.hpp).
+template <class N>
+using finite_mask = decltype(std::declval<const N&>() == std::declval<const N&>());
+template <class N>
+[[nodiscard]] constexpr finite_mask<N> every() noexcept {  // true (in every lane)
+    const N zero(0);
+    return zero == zero;
+}
+
+// Every number of x (a model, a motor map, a kinematics, nested arrays, multivectors) finite; x's
+// numbers are of type N.
+template <class N, class X>
+[[nodiscard]] constexpr finite_mask<N> finite_all(const X& x) noexcept {
+    if constexpr (std::is_same_v<X, N>) {
+        if constexpr (lane_wise<N>) return finite_lanes(x);
+        else return is_finite(x);
+    } else if constexpr (requires { x.R; x.t; }) {
+        return finite_all<N>(x.R) && finite_all<N>(x.t);
+    } else if constexpr (requires { x.X; x.pose; x.v; x.a; }) {
+        return finite_all<N>(x.X) && finite_all<N>(x.pose) && finite_all<N>(x.v) && finite_all<N>(x.a);
+    } else if constexpr (requires { x.links; x.gravity; }) {  // a model: every link's numbers, frames, gravity
+        finite_mask<N> ok = finite_all<N>(x.gravity) && finite_all<N>(x.frames);
         boost::hana::for_each(x.links, [&](const auto& l) {
-            ok = ok && finite_all(l.placement) && finite_all(l.inertia) && finite_all(l.joint);
+            ok = ok && finite_all<N>(l.placement) && finite_all<N>(l.inertia) && finite_all<N>(l.joint);
         });
         return ok;
     } else if constexpr (requires { x.parameters(); }) {  // body_inertia: its ten parameters
-        return std::apply([](const auto&... p) { return (finite_all(p) && ...); }, x.parameters());
+        return std::apply([](const auto&... p) { return (every<N>() && ... && finite_all<N>(p)); }, x.parameters());
     } else if constexpr (requires { x.u; }) {  // a joint's run-time axis
-        return finite_all(x.u);
+        return finite_all<N>(x.u);
     } else if constexpr (requires { x.multiplier; x.offset; x.joint; }) {  // a mimic joint's coupling
-        return is_finite(x.multiplier) && is_finite(x.offset) && finite_all(x.joint);
-    } else if constexpr (std::is_empty_v<T>) {  // a joint without parameters
-        return true;
-    } else if constexpr (multivector_type<T>) {
-        for (std::size_t i = 0; i < T::size(); ++i)
-            if (!is_finite(x[i])) return false;
-        return true;
+        return finite_all<N>(x.multiplier) && finite_all<N>(x.offset) && finite_all<N>(x.joint);
+    } else if constexpr (std::is_empty_v<X>) {  // a joint without parameters
+        return every<N>();
+    } else if constexpr (multivector_type<X>) {
+        finite_mask<N> ok = every<N>();
+        for (std::size_t i = 0; i < X::size(); ++i) ok = ok && finite_all<N>(x[i]);
+        return ok;
     } else {
-        for (const auto& e : x)
-            if (!finite_all(e)) return false;
-        return true;
+        finite_mask<N> ok = every<N>();
+        for (const auto& e : x) ok = ok && finite_all<N>(e);
+        return ok;
     }
 }
+
+// The first failure is the one reported: e where e failed, else f (a scalar's error_code; each
+// lane's for packs); first_failure(e, ok, code): e, else code where ok fails.
+[[nodiscard]] constexpr error_code first_of(error_code e, error_code f) noexcept { return e != error_code::none ? e : f; }
+template <std::size_t L>
+[[nodiscard]] constexpr lane_errors<L> first_of(lane_errors<L> e, const lane_errors<L>& f) noexcept {
+    for (std::size_t l = 0; l < L; ++l) e[l] = first_of(e[l], f[l]);
+    return e;
+}
+[[nodiscard]] constexpr error_code first_failure(error_code e, bool ok, error_code code) noexcept {
+    return first_of(e, ok ? error_code::none : code);
+}
+template <class T, std::size_t L>
+[[nodiscard]] constexpr lane_errors<L> first_failure(lane_errors<L> e, const lanes<T, L>& ok, error_code code) noexcept {
+    for (std::size_t l = 0; l < L; ++l) e[l] = first_failure(e[l], ok[l], code);
+    return e;
+}
+
 // A floating joint's eight numbers are a motor when its rotor part is not zero (map_of reads any
 // such motor as the rigid motion it encodes).
 template <class Tree, class T>
-constexpr error_code check_configuration(const std::array<T, Tree::nq>& q) noexcept {
-    if (!finite_all(q)) return error_code::non_finite;
+[[nodiscard]] constexpr error_of_t<T> check_configuration(const std::array<T, Tree::nq>& q) noexcept {
+    finite_mask<T> rotor = every<T>();
     for (std::size_t i = 0; i < Tree::size; ++i)
         if (Tree::nq_of[i] == 8) {
             const T* g = q.data() + Tree::q_offset[i];
-            if (!(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g[3] * g[3] > T(0))) return error_code::not_a_motor;
+            rotor = rotor && g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g[3] * g[3] > T(0);
         }
-    return error_code::none;
+    const error_of_t<T> e = first_failure(error_of_t<T>{}, finite_all<T>(q), error_code::non_finite);
+    return first_failure(e, rotor, error_code::not_a_motor);
 }
 }  // namespace algorithm_detail
 
+// The algorithm's result and why it is not acceptable, if it is not (see the top of the file).
+// With packs (ctga::pack as T) each lane is checked on its own: the error is a lane_errors, the
+// algorithm runs on every lane, and a failed lane's numbers are meaningless, the others' valid.
 template <class Algorithm, class Tree, class T, class... Args>
 [[nodiscard]] constexpr auto checked_call(const Algorithm& algorithm, const model<Tree, T>& m, const configuration<Tree, T>& q,
-                                          const Args&... args) noexcept -> checked<decltype(algorithm(m, q, args...))> {
+                                          const Args&... args) noexcept
+    -> checked<decltype(algorithm(m, q, args...)), error_of_t<T>> {
+    using namespace algorithm_detail;
     using result = decltype(algorithm(m, q, args...));
-    if (!algorithm_detail::finite_all(m)) return {result{}, error_code::non_finite};
-    if (const error_code e = algorithm_detail::check_configuration<Tree>(q); e != error_code::none) return {result{}, e};
-    if (!(algorithm_detail::finite_all(args) && ...)) return {result{}, error_code::non_finite};
+    error_of_t<T> e = first_failure(error_of_t<T>{}, finite_all<T>(m), error_code::non_finite);
+    e = first_of(e, check_configuration<Tree>(q));
+    e = first_failure(e, (every<T>() && ... && finite_all<T>(args)), error_code::non_finite);
+    if constexpr (!lane_wise<T>) {
+        if (e != error_code::none) return {result{}, e};  // (the algorithm is not run on bad input)
+    }
     const result r = algorithm(m, q, args...);
-    if (!algorithm_detail::finite_all(r)) return {result{}, error_code::non_finite};
-    return {r, error_code::none};
+    e = first_failure(e, finite_all<T>(r), error_code::non_finite);
+    if constexpr (!lane_wise<T>) {
+        if (e != error_code::none) return {result{}, e};
+    }
+    return {r, e};
 }
 
 }  // namespace ctga::chains

@@ -46,10 +46,7 @@ template <class U, class Tree, class T>
             const auto& a = m.template link<I>();
             auto& b = out.template link<I>();
             b.placement = cast_map<U>(a.placement);
-            using s = typename body_inertia<U>::scalar;
-            const auto& N = a.inertia;
-            b.inertia = {s{U(N.m[0])},   s{U(N.hx[0])},  s{U(N.hy[0])},  s{U(N.hz[0])},  s{U(N.ixx[0])},
-                         s{U(N.iyy[0])}, s{U(N.izz[0])}, s{U(N.ixy[0])}, s{U(N.ixz[0])}, s{U(N.iyz[0])}};
+            b.inertia = parameters_cast<U>(a.inertia);
             if constexpr (is_mimic<J>) {
                 b.joint.multiplier = U(a.joint.multiplier);
                 b.joint.offset = U(a.joint.offset);

@@ -152,7 +152,7 @@ struct tree_motion {
         return ok;
     }
     [[nodiscard]] constexpr bool finite(const motor_type& q, const screw_type& qd) const noexcept {
-        return algorithm_detail::finite_all(q.x) && algorithm_detail::finite_all(qd.x);
+        return algorithm_detail::finite_all<T>(q.x) && algorithm_detail::finite_all<T>(qd.x);
     }
     [[nodiscard]] constexpr T magnitude(const screw_type& z) const noexcept {
         T out = T(0);

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <tuple>
+#include <type_traits>
 
 #include "ctga/mechanics/algebras.hpp"
 #include "ctga/mechanics/coscrew.hpp"
@@ -147,6 +148,15 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr mobility<T> to_mobility(const body_mobility<T>& M) noexcept {
     return formula([](auto element) { return element; })(M);
+}
+
+// A body's inertia or mobility (its ten parameters) in scalar type U, every parameter U(x): a
+// pack broadcasts it to every lane, keeping each number's bits (chains::model_cast,
+// inertia_kind::body_cast).
+template <class U, template <class> class X, class T>
+    requires(std::is_same_v<X<T>, body_inertia<T>> || std::is_same_v<X<T>, body_mobility<T>>)
+[[nodiscard]] constexpr X<U> parameters_cast(const X<T>& x) noexcept {
+    return std::apply([](const auto&... p) { return X<U>{typename X<U>::scalar{U(p[0])}...}; }, x.parameters());
 }
 
 }  // namespace ctga

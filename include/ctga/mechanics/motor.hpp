@@ -150,6 +150,24 @@ template <class T>
     for (int i = 0; i < 4; ++i) x[4 + i] -= d * x[i];
     return x;
 }
+// Packs, lane by lane: the renormalised motor (NaN in a lane that has a NaN or ∞, or α = 0) and
+// the lanes' masks: finite, and a rotor part (largest |αi| > 0).
+template <class T>
+struct lanes_renormalized {
+    motor<T> value;
+    decltype(T() > T()) finite, rotor;
+};
+template <lane_wise T>
+[[nodiscard]] CTGA_ALWAYS_INLINE constexpr lanes_renormalized<T> in_lanes(const motor<T>& g) noexcept {
+    T m = T(0);
+    auto finite = finite_lanes(g[0]);
+    for (int i = 0; i < 8; ++i) finite = finite && finite_lanes(g[i]);
+    for (int i = 0; i < 4; ++i) m = select(abs(g[i]) > m, abs(g[i]), m);
+    const auto rotor = m > T(0);
+    const T nan(std::numeric_limits<typename T::value_type>::quiet_NaN());
+    const auto x = scaled(g, select(finite && rotor, m, nan));
+    return {motor<T>{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]}, finite, rotor};
+}
 }  // namespace renormalize_detail
 
 template <class T>
@@ -157,17 +175,11 @@ template <class T>
     if constexpr (lane_wise<T>) {
         // packs: every lane renormalised; a lane with a NaN or infinity, or a zero rotor part,
         // reports it (non_finite, not_a_motor) and its numbers are NaN
-        T m = T(0);
-        auto finite = finite_lanes(g[0]);
-        for (int i = 0; i < 8; ++i) finite = finite && finite_lanes(g[i]);
-        for (int i = 0; i < 4; ++i) m = select(abs(g[i]) > m, abs(g[i]), m);
-        const auto rotor = m > T(0);
-        const T nan(std::numeric_limits<typename T::value_type>::quiet_NaN());
-        const auto x = renormalize_detail::scaled(g, select(finite && rotor, m, nan));
+        const auto r = renormalize_detail::in_lanes(g);
         error_of_t<T> e;
         for (std::size_t l = 0; l < T::size; ++l)
-            e[l] = !finite[l] ? error_code::non_finite : !rotor[l] ? error_code::not_a_motor : error_code::none;
-        return {motor<T>{x[0], x[1], x[2], x[3], x[4], x[5], x[6], x[7]}, e};
+            e[l] = !r.finite[l] ? error_code::non_finite : !r.rotor[l] ? error_code::not_a_motor : error_code::none;
+        return {r.value, e};
     } else {
         if (!all_finite(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7])) return {motor<T>{}, error_code::non_finite};
         T m = T(0);
@@ -187,7 +199,7 @@ template <class T>
 // that the failure shows in every later result instead of passing for a rigid motion.
 template <class T>
 [[nodiscard]] constexpr motor<T> renormalize(const motor<T>& g) noexcept {
-    if constexpr (lane_wise<T>) return renormalize_checked(g).value;  // (a failed lane's numbers are NaN)
+    if constexpr (lane_wise<T>) return renormalize_detail::in_lanes(g).value;  // (a failed lane's numbers are NaN)
     else return value_or_nan(renormalize_checked(g));
 }
 

@@ -1,4 +1,4 @@
-// Many bodies of one kind, stepped together in a structure-of-arrays layout.
+// Many bodies of one kind, stepped together: structure-of-arrays storage, SIMD packs of bodies.
 //
 //   ctga::batch<double, ctga::subspace::full, ctga::inertia_kind::diagonal, 10'000> bodies{{m, dx, dy, dz}};
 //   bodies.add(g0, s0);                        // false once Capacity bodies are held
@@ -12,59 +12,62 @@
 // or heap storage).
 //
 // One set of mass properties. A batch holds identical bodies: one `K::data<T>` for all of them
-// (bodies of one kind with different masses or moments go in different batches). The mass
-// properties are then loop invariants: the inertia's scalars and their reciprocals (stored in
-// K::data when it is made, body_kinds.hpp) sit in registers, so the per-body work is the equation of motion and nothing else, and every
-// kind, `general` included (60 numbers per body), costs no memory traffic beyond the state.
+// (bodies of one kind with different masses or moments go in different batches), broadcast to
+// every lane of a pack once per step (body_cast, body_kinds.hpp).
 //
-// step_rk4(h) is the classical Runge–Kutta step of ctga::rk4{} on (g, s) in the body frame, the
-// motor renormalised afterwards, as loops over the bodies whose bodies are straight-line code:
-// load body i's components into ctga multivectors, evaluate the rates with body_motor_rate and
-// body_acceleration (always-inline engine code), combine the stages with rk4::step's
-// expressions, store; then renormalise. No branch depends on the data and every access is
-// unit-stride, so GCC vectorises every loop across bodies (2 bodies per SSE2 register, 4 or 8
-// with AVX or AVX-512) with no flags beyond -O2/-O3. The arithmetic is rk4's own, operation for
-// operation, so with batch_renormalization::exact (the default) each body gets exactly the
-// numbers of ctga::rk4{}.step(body_motion<T, S, K>{body}, x, h), as long as the compiler forms
-// no fused multiply-adds (GCC contracts a·b + c by default in C++ when the target has FMA, e.g.
-// -march=native, and may do so differently in the two codes: then they agree to rounding).
+// step_rk4(h) is ctga::rk4{}.step (renormalisation included) with a pack of Lanes bodies as the
+// scalar: the same mechanism as a batch of robots (chains/batch.hpp, support/pack.hpp). Bodies
+// i … i + Lanes − 1 are one vector load per component (the arrays above), one instruction stream
+// of rk4 on body_motion<pack<T, Lanes>, S, K>, one vector store per component. The Lanes default
+// is the target's vector width (native_lanes: 2 doubles with SSE2, 4 with AVX, 8 with AVX-512).
+// The last size() mod Lanes bodies, and every body in a constant expression, are stepped by the
+// same loop with T itself as the scalar. Every lane does rk4's operations on its body in rk4's
+// order, so each body gets ctga::rk4{}.step(model(), state(i), h)'s numbers bit for bit as long as
+// the compiler contracts a·b + c into fused multiply-adds alike in both codes (it may not: GCC
+// contracts by default when the target has FMA, e.g. -march=native; then they agree to rounding).
 //
-// Renormalisation without branches: branch_free.hpp.
+// This replaced loops over the bodies written for the compilers' auto-vectorisers (with their own
+// branch-free renormalisation), which were slower or no faster: 10,000 bodies of
+// inertia_kind::diagonal, million body-steps per second, packs against those loops (Zen 5, GCC 12
+// and Clang 14 at -O3): full bodies 18.9 against 11.6 (GCC, SSE2), 82 against 15 (GCC,
+// -march=native --param=sra-max-scalarization-size-Ospeed=4096, as batches of robots are built:
+// without the parameter GCC leaves a pack's motors in memory, 66), 108 against 91 (Clang,
+// -march=native); planar bodies 64 against 51, 307 against 313, 309 against 228. (The loops'
+// optional renormalisation with one division per body, a few ulps off rk4's, was faster still
+// for planar bodies, 445 and 376: it is not kept; every body gets rk4's numbers.)
 //
-// Failures. Each loop that stores also ORs together, branch-free, a flag word per component
-// that marks a NaN or an infinity (an integer reduction over the bits of the new state, which
-// vectorises too); after the loops step_rk4 tests it once and returns error_code::non_finite
-// when any body's new state is not finite (first_non_finite() finds the body). The step is not
-// undone: bodies with finite states are stepped correctly, and a non-finite one stays so. A
-// non-finite h is rejected before anything is stepped.
+// Failures. The loop adds x − x over every new number (0 when x is finite, NaN when not) and
+// tests the sum once: step_rk4 returns error_code::non_finite when any body's new state has a
+// NaN or an infinity (first_non_finite() finds the body). The step is not undone: bodies with
+// finite states are stepped correctly, and a non-finite one stays so. A non-finite h is rejected
+// before anything is stepped.
 //
 // aos_step_rk4 is the array-of-structures reference: ctga::rk4{}.step for each body of a
 // std::array of motion_states (bench/batch.cpp times the two).
 #pragma once
 
 #include <array>
-#include <bit>
-#include <cmath>
 #include <cstddef>
-#include <cstdint>
 #include <limits>
 #include <type_traits>
 #include <utility>
 
 #include "ctga/integrators/methods.hpp"
 #include "ctga/integrators/model.hpp"
-#include "ctga/support/checked.hpp"
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/scenes/body_kinds.hpp"
-#include "ctga/scenes/branch_free.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/pack.hpp"
 
 namespace ctga {
 
-
-// N ≤ Capacity bodies of subspace S and inertia structure K with one set of mass properties, in
-// structure-of-arrays layout (see the top of this file).
-template <class T, class S, class K, std::size_t Capacity, batch_renormalization Renormalization = batch_renormalization::exact>
+// N ≤ Capacity bodies of subspace S and inertia structure K with one set of mass properties,
+// stored as structure of arrays and stepped Lanes at a time (see the top of this file).
+template <class T, class S, class K, std::size_t Capacity, std::size_t Lanes = native_lanes<T>>
 class batch {
+    static_assert(Lanes >= 1 && (Lanes & (Lanes - 1)) == 0,
+                  "ctga::batch: Lanes (bodies per instruction stream) is a power of two");
+
 public:
     using scalar_type = T;
     using motor_type = typename S::template motor_type<T>;
@@ -73,6 +76,7 @@ public:
     using model_type = body_motion<T, S, K>;
     using state_type = motion_state<motor_type, screw_type>;
 
+    static constexpr std::size_t lanes = Lanes;
     static constexpr std::size_t motor_size = motor_type::size();
     static constexpr std::size_t screw_size = screw_type::size();
 
@@ -91,20 +95,19 @@ public:
     // batch is full. Nothing is validated here: step_rk4 reports non-finite states.
     constexpr bool add(const motor_type& g, const screw_type& s) noexcept {
         if (n_ == Capacity) return false;
-        store(n_++, g, s);
+        set(n_++, g, s);
         return true;
     }
     constexpr bool add(const state_type& x) noexcept { return add(x.g, x.s); }
 
     // Body i's pose, velocity and state as ctga types (i < size()).
-    [[nodiscard]] constexpr motor_type pose(std::size_t i) const noexcept {
-        return load<motor_type>(g_, i, std::make_index_sequence<motor_size>{});
-    }
-    [[nodiscard]] constexpr screw_type velocity(std::size_t i) const noexcept {
-        return load<screw_type>(s_, i, std::make_index_sequence<screw_size>{});
-    }
+    [[nodiscard]] constexpr motor_type pose(std::size_t i) const noexcept { return load<T, motor_type>(g_, i); }
+    [[nodiscard]] constexpr screw_type velocity(std::size_t i) const noexcept { return load<T, screw_type>(s_, i); }
     [[nodiscard]] constexpr state_type state(std::size_t i) const noexcept { return {pose(i), velocity(i)}; }
-    constexpr void set(std::size_t i, const motor_type& g, const screw_type& s) noexcept { store(i, g, s); }
+    constexpr void set(std::size_t i, const motor_type& g, const screw_type& s) noexcept {
+        store(g_, i, g);
+        store(s_, i, s);
+    }
 
     // The contiguous array of motor (screw) component c over the bodies: c in the order of
     // motor_type's (screw_type's) blades, entries 0 … size() − 1 meaningful.
@@ -112,132 +115,94 @@ public:
     [[nodiscard]] constexpr const T* screw_component(std::size_t c) const noexcept { return s_[c].data(); }
 
     // One classical RK4 step of size h for every body (see the top of this file): the results of
-    // ctga::rk4{}.step(model(), state(i), h) with renormalisation. Returns non_finite, having
-    // stepped nothing, for a non-finite h; and non_finite, after the step, when some body's new
-    // state has a NaN or an infinity.
+    // ctga::rk4{}.step(model(), state(i), h), renormalisation included. Returns non_finite,
+    // having stepped nothing, for a non-finite h; and non_finite, after the step, when some
+    // body's new state has a NaN or an infinity.
     constexpr error_code step_rk4(const T& step) noexcept {
-        // by value: a reference could point into the arrays the loop stores to, and would be
-        // reloaded on every iteration (a block after the loop's exit test: no if-conversion)
-        const T h = step;
+        const T h = step;  // by value: a reference could point into the arrays the loop stores to
         if (!is_finite(h)) return error_code::non_finite;
-        typename flags::word bad = 0;
-        std::array<T, block> scale{}, root{};  // per body of a block: the scale, and n² then its root
-        for (std::size_t first = 0; first < n_; first += block) {
-            const std::size_t last = first + block < n_ ? first + block : n_;
-            bad |= advance(first, last, h);
-            measure(first, last, scale, root);
-            for (std::size_t j = 0; j < last - first; ++j) root[j] = renormalizer::root(root[j]);
-            bad |= apply(first, last, scale, root);
+        std::size_t packed = 0;  // bodies [0, packed) in packs of Lanes
+        bool finite = true;
+        if constexpr (Lanes > 1) {
+            if (!std::is_constant_evaluated()) {
+                packed = n_ - n_ % Lanes;
+                finite = advance<pack<T, Lanes>>(0, packed, h);
+            }
         }
-        return flags::any(bad) ? error_code::non_finite : error_code::none;
+        finite = advance<T>(packed, n_, h) && finite;
+        return finite ? error_code::none : error_code::non_finite;
     }
 
     // The first body whose state has a NaN or an infinity, or size() when there is none.
     [[nodiscard]] constexpr std::size_t first_non_finite() const noexcept {
-        for (std::size_t i = 0; i < n_; ++i) {
-            for (std::size_t c = 0; c < motor_size; ++c)
-                if (!is_finite(g_[c][i])) return i;
-            for (std::size_t c = 0; c < screw_size; ++c)
-                if (!is_finite(s_[c][i])) return i;
-        }
+        for (std::size_t i = 0; i < n_; ++i)
+            if (!model().finite(pose(i), velocity(i))) return i;
         return n_;
     }
 
 private:
-    using flags = batch_detail::finiteness_flags<T>;
-    using renormalizer = batch_detail::renormalizer<motor_type, Renormalization>;
+    template <class P>
+    static constexpr std::size_t width = std::is_same_v<P, T> ? 1 : Lanes;
 
-    // The step runs over blocks of this many bodies, in four loops each: advance (the RK4
-    // stages, leaving the unnormalised motors in g_), then the three stages of the
-    // renormalisation (measure, root, apply; batch_detail::renormalizer), the intermediate
-    // numbers in two arrays of a block's length. Each loop's body is then short enough for the
-    // processor to overlap many iterations: the renormalisation is a chain of about 40
-    // dependent operations (max, division, the Newton steps of the root, division), which in
-    // one loop with the stages (~1,000 operations per body) overlapped nothing and took 45% of
-    // the step. A block's motors (8 × 256 numbers) stay in the L1 cache between the loops.
-    static constexpr std::size_t block = 256;
-
-    // RK4 for bodies [first, last): rk4::step (methods.hpp) with the model's rates written out:
-    // rates(model, x) is {motor_rate(g, s), acceleration(g, s)}, shifted(x, c, k) is
-    // {g + c k.g, s + c k.s}. Stores the velocities and the unnormalised motors; returns the
-    // velocities' finiteness flags.
-    CTGA_ALWAYS_INLINE constexpr typename flags::word advance(std::size_t first, std::size_t last, const T h) noexcept {
-        const body_type body = body_;  // a loop invariant, visibly not aliased by the stores
-        const T h2 = h / T(2);
-        const T w = h / T(6);
-        typename flags::word bad = 0;
-        for (std::size_t i = first; i < last; ++i) {
-            const motor_type g = load<motor_type>(g_, i, std::make_index_sequence<motor_size>{});
-            const screw_type s = load<screw_type>(s_, i, std::make_index_sequence<screw_size>{});
-            const motor_type k1g(body_motor_rate<S, T>(g, s));
-            const screw_type k1s(body_acceleration<S, K, T>(body, s));
-            const motor_type g2(g + h2 * k1g);
-            const screw_type s2(s + h2 * k1s);
-            const motor_type k2g(body_motor_rate<S, T>(g2, s2));
-            const screw_type k2s(body_acceleration<S, K, T>(body, s2));
-            const motor_type g3(g + h2 * k2g);
-            const screw_type s3(s + h2 * k2s);
-            const motor_type k3g(body_motor_rate<S, T>(g3, s3));
-            const screw_type k3s(body_acceleration<S, K, T>(body, s3));
-            const motor_type g4(g + h * k3g);
-            const screw_type s4(s + h * k3s);
-            const motor_type k4g(body_motor_rate<S, T>(g4, s4));
-            const screw_type k4s(body_acceleration<S, K, T>(body, s4));
-            const motor_type y(g + w * (k1g + T(2) * (k2g + k3g) + k4g));
-            const screw_type v(s + w * (k1s + T(2) * (k2s + k3s) + k4s));
-            batch_detail::static_for<motor_size>([&](auto c) { g_[c][i] = y[c]; });
-            batch_detail::static_for<screw_size>([&](auto c) {
-                s_[c][i] = v[c];
-                bad |= flags::of(v[c]);
-            });
+    // rk4 for bodies [first, last), width<P> at a time, with P as the scalar; true when every
+    // new number is finite. Flattened: rk4's step and all it calls inlined into the loop (GCC
+    // otherwise calls rk4::step, passing the packs through memory: full bodies 42 against 55
+    // million body-steps per second in 8 lanes).
+    template <class P>
+    [[gnu::flatten]] constexpr bool advance(std::size_t first, std::size_t last, const T h) noexcept {
+        using model_p = body_motion<P, S, K>;
+        using motor_p = typename S::template motor_type<P>;
+        using screw_p = typename S::template screw_type<P>;
+        const model_p model{inertia_kind::body_cast<P>(body_)};
+        const P step(h);
+        P defect(T(0));  // Σ (x − x) over the new numbers: 0, or NaN once one is not finite
+        for (std::size_t i = first; i < last; i += width<P>) {
+            const state_of<model_p> x{load<P, motor_p>(g_, i), load<P, screw_p>(s_, i)};
+            state_of<model_p> y = rk4{.renormalize = false}.step(model, x, step).value;
+            y.g = renormalized<P>(y.g);
+            store(g_, i, y.g);
+            store(s_, i, y.s);
+            for (std::size_t c = 0; c < motor_size; ++c) defect += y.g[c] - y.g[c];
+            for (std::size_t c = 0; c < screw_size; ++c) defect += y.s[c] - y.s[c];
         }
-        return bad;
+        return integrator_detail::all_of(defect == defect);
     }
 
-    // Renormalisation, stage 1 for bodies [first, last): the scale and n² of each motor.
-    CTGA_ALWAYS_INLINE constexpr void measure(std::size_t first, std::size_t last, std::array<T, block>& scale,
-                                              std::array<T, block>& n2) noexcept {
-        for (std::size_t i = first; i < last; ++i) {
-            const motor_type y = load<motor_type>(g_, i, std::make_index_sequence<motor_size>{});
-            std::array<T, 8> x = renormalizer::unpack(y);
-            n2[i - first] = renormalizer::measure(x, scale[i - first]);
-            if constexpr (Renormalization == batch_renormalization::exact) {  // α/m
-                motor_type out = y;
-                renormalizer::pack(x, out);
-                batch_detail::static_for<motor_size>([&](auto c) {
-                    if constexpr (renormalizer::alpha_slot[c]) g_[c][i] = out[c];
-                });
-            }
+    // The model's renormalize (project ∘ renormalize ∘ motor, body_kinds.hpp), the same
+    // operations, without renormalize's debug-build assertion: a motor that cannot be
+    // renormalised (a NaN or ∞, a zero rotor part) becomes NaNs, which the step reports.
+    template <class P, class M>
+    [[nodiscard]] CTGA_ALWAYS_INLINE static constexpr M renormalized(const M& g) noexcept {
+        if constexpr (lane_wise<P>) {
+            return project<M>(renormalize(motor<P>(g)));  // (lane-wise: NaN lanes, no assertion)
+        } else {
+            const checked<motor<T>> r = renormalize_checked(motor<T>(g));
+            motor<T> out = r.value;
+            if (r.error != error_code::none)
+                for (std::size_t c = 0; c < out.size(); ++c) out[c] = std::numeric_limits<T>::quiet_NaN();
+            return project<M>(out);
         }
     }
 
-    // Renormalisation, stage 3: the motors of bodies [first, last) renormalised in place;
-    // returns their finiteness flags.
-    CTGA_ALWAYS_INLINE constexpr typename flags::word apply(std::size_t first, std::size_t last,
-                                                            const std::array<T, block>& scale,
-                                                            const std::array<T, block>& root) noexcept {
-        typename flags::word bad = 0;
-        for (std::size_t i = first; i < last; ++i) {
-            motor_type g = load<motor_type>(g_, i, std::make_index_sequence<motor_size>{});
-            std::array<T, 8> x = renormalizer::unpack(g);
-            renormalizer::apply(x, scale[i - first], root[i - first]);
-            renormalizer::pack(x, g);
-            batch_detail::static_for<motor_size>([&](auto c) {
-                g_[c][i] = g[c];
-                bad |= flags::of(g[c]);
-            });
-        }
-        return bad;
+    // Component c of bodies i … i + width<P> − 1 as one P: a vector load for a pack.
+    template <class P>
+    [[nodiscard]] CTGA_ALWAYS_INLINE static constexpr P lanes_at(const T* from) noexcept {
+        if constexpr (std::is_same_v<P, T>) return *from;
+        else return P::load(from);
     }
-
-    template <class X, std::size_t N, std::size_t... C>
+    template <class P, class X, std::size_t N>
     [[nodiscard]] CTGA_ALWAYS_INLINE static constexpr X load(const std::array<std::array<T, Capacity>, N>& a,
-                                                             std::size_t i, std::index_sequence<C...>) noexcept {
-        return X{a[C][i]...};
+                                                             std::size_t i) noexcept {
+        return [&]<std::size_t... C>(std::index_sequence<C...>) { return X{lanes_at<P>(&a[C][i])...}; }(
+            std::make_index_sequence<N>{});
     }
-    constexpr void store(std::size_t i, const motor_type& g, const screw_type& s) noexcept {
-        for (std::size_t c = 0; c < motor_size; ++c) g_[c][i] = g[c];
-        for (std::size_t c = 0; c < screw_size; ++c) s_[c][i] = s[c];
+    template <class X, std::size_t N>
+    CTGA_ALWAYS_INLINE static constexpr void store(std::array<std::array<T, Capacity>, N>& a, std::size_t i,
+                                                   const X& x) noexcept {
+        for (std::size_t c = 0; c < N; ++c) {
+            if constexpr (std::is_same_v<std::remove_cvref_t<decltype(x[c])>, T>) a[c][i] = x[c];
+            else x[c].store(&a[c][i]);
+        }
     }
 
     body_type body_{};

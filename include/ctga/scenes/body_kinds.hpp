@@ -96,12 +96,20 @@ public:
         requires(sizeof...(U) == N && (std::is_convertible_v<U, T> && ...))
     constexpr scalars_and_reciprocals(const U&... v) noexcept
         : value_{static_cast<T>(v)...}, reciprocal_{T(T(1) / static_cast<T>(v))...} {}
+    // another scalar type's, every number converted (a pack: broadcast), the reciprocals too
+    template <class U>
+    constexpr explicit scalars_and_reciprocals(const scalars_and_reciprocals<U, N>& b) noexcept
+        : value_{}, reciprocal_{} {
+        for (std::size_t i = 0; i < N; ++i) value_[i] = T(b.value_[i]), reciprocal_[i] = T(b.reciprocal_[i]);
+    }
 
     [[nodiscard]] constexpr const T& m() const noexcept { return value_[0]; }
     [[nodiscard]] constexpr scalar<T> value(std::size_t i) const noexcept { return scalar<T>{value_[i]}; }
     [[nodiscard]] constexpr scalar<T> reciprocal(std::size_t i) const noexcept { return scalar<T>{reciprocal_[i]}; }
 
 private:
+    template <class, std::size_t>
+    friend class scalars_and_reciprocals;
     std::array<T, N> value_;
     std::array<T, N> reciprocal_;
 };
@@ -165,6 +173,28 @@ struct general {
     static constexpr auto M = [](auto, auto... m) { return body_mobility<>::element(m...); };
     static constexpr auto velocity = [](auto X, auto, auto... m) { return body_mobility<>::velocity_of(X, m...); };
 };
+
+// A body's data in scalar type U (a pack: the same body in every lane, scenes/batch.hpp): every
+// number converted, U(x), none computed again (a lane holds the scalar's bits).
+template <class U, class T, std::size_t N>
+[[nodiscard]] constexpr scalars_and_reciprocals<U, N> body_cast(const scalars_and_reciprocals<T, N>& b) noexcept {
+    return scalars_and_reciprocals<U, N>(b);
+}
+template <class U, class T>
+[[nodiscard]] constexpr rigid_body<U> body_cast(const rigid_body<T>& b) noexcept {
+    const auto each = [](auto& to, const auto& from) {
+        for (std::size_t c = 0; c < from.size(); ++c) to[c] = U(from[c]);
+    };
+    rigid_body<U> out{};
+    out.properties.mass = U(b.properties.mass);
+    each(out.properties.com, b.properties.com);
+    for (std::size_t r = 0; r < 3; ++r) each(out.properties.inertia_c[r], b.properties.inertia_c[r]);
+    each(out.N, b.N);
+    each(out.M, b.M);
+    out.Nb = parameters_cast<U>(b.Nb);
+    out.Mb = parameters_cast<U>(b.Mb);
+    return out;
+}
 
 // E ∨ (M ∧ X): the kind's mobility acting on a co-screw X, in the kind's own form when it has one.
 template <class K, class X, class... P>

@@ -25,6 +25,10 @@
 #include <cstdint>
 #include <type_traits>
 
+#if defined(__SSE2__)
+#include <immintrin.h>
+#endif
+
 #include "ctga/support/inline.hpp"
 #include "ctga/support/math.hpp"
 
@@ -73,7 +77,10 @@ struct pack {
     pack() = default;
     // every lane x (a model's parameter shared by all lanes, a constant of the engine)
     CTGA_ALWAYS_INLINE constexpr pack(T x) noexcept : v(vector{} + x) {}
-    CTGA_ALWAYS_INLINE constexpr explicit pack(int x) noexcept : pack(T(x)) {}
+    // every lane T(x): an integer, or a double in float lanes (a constant of the engine)
+    template <class U>
+        requires(std::is_arithmetic_v<U> && !std::is_same_v<U, T>)
+    CTGA_ALWAYS_INLINE constexpr explicit pack(U x) noexcept : pack(T(x)) {}
     CTGA_ALWAYS_INLINE constexpr explicit pack(const vector& x, std::nullptr_t) noexcept : v(x) {}
 
     // lane l is f(l)
@@ -86,6 +93,15 @@ struct pack {
 
     [[nodiscard]] CTGA_ALWAYS_INLINE constexpr T operator[](std::size_t l) const noexcept { return v[l]; }
     CTGA_ALWAYS_INLINE constexpr void set(std::size_t l, T x) noexcept { v[l] = x; }
+
+    // lanes from (to) L consecutive numbers: one vector load (store), aligned or not (a batch's
+    // structure of arrays, scenes/batch.hpp)
+    [[nodiscard]] CTGA_ALWAYS_INLINE static pack load(const T* from) noexcept {
+        pack p;
+        __builtin_memcpy(&p.v, from, sizeof(vector));
+        return p;
+    }
+    CTGA_ALWAYS_INLINE void store(T* to) const noexcept { __builtin_memcpy(to, &v, sizeof(vector)); }
 
     CTGA_ALWAYS_INLINE friend constexpr pack operator+(const pack& a, const pack& b) noexcept { return pack(a.v + b.v, nullptr); }
     CTGA_ALWAYS_INLINE friend constexpr pack operator-(const pack& a, const pack& b) noexcept { return pack(a.v - b.v, nullptr); }
@@ -107,6 +123,20 @@ struct pack {
     CTGA_ALWAYS_INLINE friend constexpr mask operator>(const pack& a, const pack& b) noexcept { return {mask_vector(a.v > b.v)}; }
     CTGA_ALWAYS_INLINE friend constexpr mask operator>=(const pack& a, const pack& b) noexcept { return {mask_vector(a.v >= b.v)}; }
 };
+
+// The lanes of T in the widest vector registers the target offers (-march): 64 bytes with
+// AVX-512, 32 with AVX, 16 with SSE2 or NEON; 1 (plain T) without vector registers.
+template <class T>
+inline constexpr std::size_t native_lanes =
+#if defined(__AVX512F__)
+    64 / sizeof(T);
+#elif defined(__AVX__)
+    32 / sizeof(T);
+#elif defined(__SSE2__) || defined(__ARM_NEON)
+    16 / sizeof(T);
+#else
+    1;
+#endif
 
 template <class P>
 inline constexpr bool is_pack = false;
@@ -139,9 +169,43 @@ template <class T, std::size_t L>
     return x == x && x - x == pack<T, L>(T(0));
 }
 
+namespace pack_detail {
+// √ of every lane in one instruction per register where the target has it (correctly rounded,
+// as std::sqrt: the same bits), else lane by lane. (std::sqrt lane by lane is a scalar
+// instruction and a guarded call per lane: errno, -fmath-errno.)
+template <class T, std::size_t L>
+CTGA_ALWAYS_INLINE void sqrt_register(const T* x, T* out) noexcept {
+    using vector [[gnu::vector_size(sizeof(T) * L)]] = T;
+    vector v, r;
+    __builtin_memcpy(&v, x, sizeof(v));
+#if defined(__AVX512F__)
+    // (the zero-masking forms: GCC 12's _mm512_sqrt_pd reads an undefined vector, -Wmaybe-uninitialized)
+    if constexpr (sizeof(v) == 64 && sizeof(T) == 8) r = _mm512_maskz_sqrt_pd(__mmask8(0xff), v);
+    else if constexpr (sizeof(v) == 64) r = _mm512_maskz_sqrt_ps(__mmask16(0xffff), v);
+    else
+#endif
+#if defined(__AVX__)
+    if constexpr (sizeof(v) == 32 && sizeof(T) == 8) r = _mm256_sqrt_pd(v);
+    else if constexpr (sizeof(v) == 32) r = _mm256_sqrt_ps(v);
+    else
+#endif
+#if defined(__SSE2__)
+    if constexpr (sizeof(v) == 16 && sizeof(T) == 8) r = _mm_sqrt_pd(v);
+    else if constexpr (sizeof(v) == 16) r = _mm_sqrt_ps(v);
+    else
+#endif
+        for (std::size_t l = 0; l < L; ++l) r[l] = std::sqrt(v[l]);
+    __builtin_memcpy(out, &r, sizeof(r));
+}
+}  // namespace pack_detail
+
 template <class T, std::size_t L>
 [[nodiscard]] CTGA_ALWAYS_INLINE pack<T, L> sqrt(const pack<T, L>& x) noexcept {
-    return pack<T, L>::generate([&](std::size_t l) { return std::sqrt(x[l]); });
+    constexpr std::size_t W = native_lanes<T> < L ? native_lanes<T> : L;  // lanes per register
+    pack<T, L> out;
+    for (std::size_t k = 0; k < L; k += W)
+        pack_detail::sqrt_register<T, W>(reinterpret_cast<const T*>(&x.v) + k, reinterpret_cast<T*>(&out.v) + k);
+    return out;
 }
 
 template <class T, std::size_t L>

@@ -50,7 +50,7 @@ constexpr kind::diagonal::data<double> box{2.0, 2.0, 2.5, 3.0};  // m, dx, dy, d
 
 // Where the target has fused multiply-adds GCC contracts a·b + c into them by default, and may do
 // so differently in the pack code and the scalar code: then they agree to rounding.
-#if defined(__FP_FAST_FMA)
+#if defined(__FP_FAST_FMA) || defined(__FMA__)
 constexpr bool bit_for_bit = false;
 #else
 constexpr bool bit_for_bit = true;

@@ -15,8 +15,10 @@
 //     the others run all their steps.
 //   - Frames by name (chains::frame<"tool">, and find_frame / visit_frame at run time): pose,
 //     velocity, accelerations and Jacobian, lane against robot; checked_call on packs reports
-//     each lane's failure (lane_errors) and keeps the other lanes' results.
+//     each lane's failure (lane_errors) and keeps the other lanes' results; load and store move
+//     every number to its lane and back.
 // PARTS: 7
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -360,6 +362,32 @@ void check_checked_call(std::uint64_t seed) {
     CHECK(ch::checked_call(ch::rnea, x.d.m, q, x.robots[2].qd, x.robots[2].qdd).error == ctga::error_code::not_a_motor);
 }
 
+// load and store between robots' arrays and packs: every number in its lane and back, for K ≥ L
+// numbers a robot (transposed blocks, the last one overlapping) and K < L (lane by lane), the
+// last pack partial.
+template <class T, std::size_t L, std::size_t K>
+void check_load_store() {
+    struct state {
+        std::array<std::array<T, K>, 3> x{};
+        T other = 0;
+    };
+    std::vector<state> robots(2 * L + 3);
+    for (std::size_t i = 0; i < robots.size(); ++i)
+        for (std::size_t a = 0; a < 3; ++a)
+            for (std::size_t k = 0; k < K; ++k) robots[i].x[a][k] = T(1000 * i + 100 * a + k);
+    std::vector<state> back(robots.size());
+    for (std::size_t first = 0; first < robots.size(); first += L) {
+        const auto p = ch::load<L>(robots, first, &state::x);
+        for (std::size_t l = 0; l < L; ++l) {
+            const state& r = robots[std::min(first + l, robots.size() - 1)];  // past the end: the last robot
+            for (std::size_t a = 0; a < 3; ++a)
+                for (std::size_t k = 0; k < K; ++k) CHECK(p[a][k][l] == r.x[a][k]);
+        }
+        ch::store<L>(p, back, first, &state::x);
+    }
+    for (std::size_t i = 0; i < robots.size(); ++i) CHECK(back[i].x == robots[i].x);
+}
+
 }  // namespace
 
 #define PACKS_CASE(name) TEST_CASE("chains on packs: " name CTGA_TEST_PART_NAME)
@@ -400,9 +428,15 @@ PACKS_CASE("batch_integrate: lie_rk4 and the implicit midpoint lane by lane, a d
 }
 #endif
 #if CTGA_TEST_PART_HOLDS(6)
-PACKS_CASE("frames by name and checked_call on packs, lane by lane") {
+PACKS_CASE("frames by name, checked_call on packs, load and store, lane by lane") {
     compare_frames<4>(61);
     check_checked_call<8>(62);
+    check_load_store<double, 2, 1>();
+    check_load_store<double, 4, 7>();
+    check_load_store<double, 8, 7>();
+    check_load_store<double, 8, 2>();
+    check_load_store<float, 16, 7>();
+    check_load_store<float, 4, 1>();
 }
 #endif
 

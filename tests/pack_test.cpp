@@ -161,6 +161,12 @@ TEST_CASE("pack: float lanes, evaluated in double and rounded: within 1 ulp of f
     CHECK(worst <= 1);
 }
 
+#if defined(__FP_FAST_FMA) || defined(__FMA__)
+constexpr double contraction = 1e-14;  // 50 steps
+#else
+constexpr double contraction = 0;
+#endif
+
 TEST_CASE("pack: one free body per lane, stepped by rk4 and lie_rk4: every lane the double step bit for bit") {
     using P = pack<double, 4>;
     namespace kind = ctga::inertia_kind;
@@ -186,8 +192,10 @@ TEST_CASE("pack: one free body per lane, stepped by rk4 and lie_rk4: every lane 
         for (std::size_t l = 0; l < 4; ++l) {
             const auto a1 = ctga::rk4{}.step(one, x[l], 1e-2).value;
             const auto b1 = ctga::lie_rk4{}.step(one, x[l], 1e-2).value;
-            for (std::size_t c = 0; c < 8; ++c) CHECK(a.value.g[c][l] == a1.g[c]);
-            for (std::size_t c = 0; c < 6; ++c) CHECK(a.value.s[c][l] == a1.s[c]);
+            // bit for bit, unless the target has FMA: then GCC contracts a·b + c into fused
+            // multiply-adds where it chooses, differently in the two codes (to rounding)
+            for (std::size_t c = 0; c < 8; ++c) CHECK(std::abs(a.value.g[c][l] - a1.g[c]) <= contraction * (1 + std::abs(a1.g[c])));
+            for (std::size_t c = 0; c < 6; ++c) CHECK(std::abs(a.value.s[c][l] - a1.s[c]) <= contraction * (1 + std::abs(a1.s[c])));
             for (std::size_t c = 0; c < 8; ++c) CHECK(std::abs(b.value.g[c][l] - b1.g[c]) <= 1e-15);
             x[l] = a1;
         }

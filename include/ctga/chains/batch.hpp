@@ -74,11 +74,11 @@ struct packed<std::array<X, K>, L> {
     using type = std::array<typename packed<X, L>::type, K>;
 };
 
-// Numbers of L robots, K each (nested std::arrays of T, contiguous), to and from K packs, L
+// Numbers of L robots, K ≥ L each (nested std::arrays of T, contiguous), to and from K packs, L
 // numbers at a time: L rows of L numbers (one vector load each), transposed in registers (log2 L
-// stages of interleaves), one vector store each; the last K mod L numbers lane by lane. (Lane by
-// lane, a pack's number is an extract and a scalar store: the tree's CRBA in 8 lanes spent more
-// time storing H than computing it.)
+// stages of shuffles), one vector store each. (Lane by lane, a pack's number is an extract and
+// a scalar store: the tree's CRBA in 8 lanes spent more time storing H than computing it.)
+// Fewer than L numbers (a short q) go lane by lane.
 template <class T, class X>
 inline constexpr std::size_t count_of = sizeof(X) / sizeof(T);  // the numbers of X (nested arrays of T)
 template <class X, class T>
@@ -114,31 +114,33 @@ CTGA_ALWAYS_INLINE void transpose(std::array<V, L>& r, std::index_sequence<E...>
         }
     if constexpr (2 * H < L) transpose<2 * H>(r, lanes);
 }
+// (K ≥ L: the blocks start at 0, L, 2L, … and, for the last K mod L numbers, at K − L, which
+// moves some numbers twice rather than lane by lane)
+template <std::size_t L, std::size_t K>
+inline constexpr auto block_starts = [] {
+    std::array<std::size_t, (K + L - 1) / L> first{};
+    for (std::size_t b = 0; b < first.size(); ++b) first[b] = b * L + L <= K ? b * L : K - L;
+    return first;
+}();
 template <class T, std::size_t L, std::size_t K>
 CTGA_ALWAYS_INLINE void gather(pack<T, L>* out, const std::array<const T*, L>& robot) noexcept {
     using V = typename pack<T, L>::vector;
-    constexpr std::size_t blocks = K - K % L;
-    for (std::size_t k = 0; k < blocks; k += L) {
+    for (const std::size_t k : block_starts<L, K>) {
         std::array<V, L> r;
         for (std::size_t j = 0; j < L; ++j) __builtin_memcpy(&r[j], robot[j] + k, sizeof(V));
         transpose<1>(r, std::make_index_sequence<L>{});
         for (std::size_t e = 0; e < L; ++e) out[k + e].v = r[e];
     }
-    for (std::size_t k = blocks; k < K; ++k)
-        for (std::size_t j = 0; j < L; ++j) out[k].set(j, robot[j][k]);
 }
 template <class T, std::size_t L, std::size_t K>
 CTGA_ALWAYS_INLINE void scatter(const pack<T, L>* x, const std::array<T*, L>& robot) noexcept {
     using V = typename pack<T, L>::vector;
-    constexpr std::size_t blocks = K - K % L;
-    for (std::size_t k = 0; k < blocks; k += L) {
+    for (const std::size_t k : block_starts<L, K>) {
         std::array<V, L> r;
         for (std::size_t e = 0; e < L; ++e) r[e] = x[k + e].v;
         transpose<1>(r, std::make_index_sequence<L>{});
         for (std::size_t j = 0; j < L; ++j) __builtin_memcpy(robot[j] + k, &r[j], sizeof(V));
     }
-    for (std::size_t k = blocks; k < K; ++k)
-        for (std::size_t j = 0; j < L; ++j) robot[j][k] = x[k][j];
 }
 }  // namespace batch_detail
 
@@ -152,7 +154,7 @@ template <std::size_t L, class Robots, class Member>
     out_type out;
     const std::size_t n = std::size(robots);
     using T = typename std::remove_cvref_t<decltype(batch_detail::first_number(out))>::value_type;
-    if constexpr (L > 1 && batch_detail::flat_numbers<scalar_value, T> &&
+    if constexpr (L > 1 && batch_detail::flat_numbers<scalar_value, T> && batch_detail::count_of<T, scalar_value> >= L &&
                   std::is_lvalue_reference_v<decltype(std::invoke(member, robots[0]))>) {
         if (!std::is_constant_evaluated() && first + L <= n) {
             std::array<const T*, L> robot;
@@ -172,7 +174,8 @@ constexpr void store(const X& x, Robots& robots, std::size_t first, Member membe
     const std::size_t n = std::size(robots);
     using scalar_value = std::remove_cvref_t<decltype(std::invoke(member, robots[0]))>;
     using T = typename std::remove_cvref_t<decltype(batch_detail::first_number(x))>::value_type;
-    if constexpr (L > 1 && batch_detail::flat_numbers<scalar_value, T> && batch_detail::flat_numbers<X, pack<T, L>>) {
+    if constexpr (L > 1 && batch_detail::flat_numbers<scalar_value, T> && batch_detail::flat_numbers<X, pack<T, L>> &&
+                  batch_detail::count_of<T, scalar_value> >= L) {
         if (!std::is_constant_evaluated() && first + L <= n) {
             std::array<T*, L> robot;
             for (std::size_t l = 0; l < L; ++l) robot[l] = reinterpret_cast<T*>(&std::invoke(member, robots[first + l]));

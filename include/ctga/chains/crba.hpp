@@ -152,8 +152,10 @@ constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const config
         const auto& L = b.link(m);
         X[b.i] = J::motion(L.placement, L.joint, q.data() + b.q_src);
     });
+    // (parameter by parameter: a whole body_inertia of packs, 640 bytes in 8 lanes, GCC copies
+    // with a call to memcpy, 11 % of the legged tree's CRBA in 8 lanes)
     std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return std::array<body_inertia<T>, Tree::size>{m.template link<I>().inertia...};
+        return std::array<body_inertia<T>, Tree::size>{parameters_cast<T>(m.template link<I>().inertia)...};
     }(std::make_index_sequence<Tree::size>{});
     each_body_backward(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
         using B = std::remove_cvref_t<decltype(b)>;

@@ -14,9 +14,9 @@
 //     the fixed-point iteration (did_not_converge) and one with a NaN (non_finite) stop there,
 //     the others run all their steps.
 //   - Frames by name (chains::frame<"tool">, and find_frame / visit_frame at run time): pose,
-//     velocity, accelerations and Jacobian, lane against robot; checked_call on packs reports
-//     each lane's failure (lane_errors) and keeps the other lanes' results; load and store move
-//     every number to its lane and back.
+//     velocity, accelerations, Jacobian and frame_motion_derivatives, lane against robot;
+//     checked_call on packs reports each lane's failure (lane_errors) and keeps the other lanes'
+//     results; load and store move every number to its lane and back.
 // PARTS: 7
 #include <algorithm>
 #include <array>
@@ -277,7 +277,8 @@ using framed_tree = ch::tree<ch::link<-1, ch::floating>, ch::link<0, ch::revolut
                              ch::link<2, ch::prismatic_x>, ch::fixed_frame<"tool", 3>, ch::fixed_frame<"imu", 0>,
                              ch::fixed_frame<"map", -1>>;
 
-// Frames by name (in the source and through find_frame at run time), lane against robot.
+// Frames by name (in the source and through find_frame at run time), lane against robot: pose,
+// velocities, accelerations, Jacobian and the derivatives of the velocity and acceleration.
 template <std::size_t L>
 void compare_frames(std::uint64_t seed) {
     using Tree = framed_tree;
@@ -294,25 +295,27 @@ void compare_frames(std::uint64_t seed) {
     x.mp = ch::model_cast<P>(x.d.m);
     const ch::model<Tree>& m = x.d.m;
     const ch::kinematics<Tree, P> k = ch::forward_kinematics(x.mp, x.q, x.qd, x.qdd);
-    const auto numbers = [](const auto& model, const auto& kin, const auto& q, auto f) {
+    const auto numbers = [](const auto& model, const auto& kin, const auto& q, const auto& qd, const auto& qdd, auto f) {
+        const auto d = ch::frame_motion_derivatives(model, q, qd, qdd, f, ch::reference::local_world_aligned);
         return std::tuple{ch::frame_pose(model, kin, f),
                           ch::frame_velocity(model, kin, f, ch::reference::local),
                           ch::frame_velocity(model, kin, f, ch::reference::world),
                           ch::frame_acceleration(model, kin, f, ch::reference::local_world_aligned),
                           ch::frame_classical_acceleration(model, kin, f, ch::reference::world),
-                          ch::frame_jacobian(model, q, f, ch::reference::local)};
+                          ch::frame_jacobian(model, q, f, ch::reference::local),
+                          d.dv_dq, d.dv_dv, d.da_dq, d.da_dv, d.da_da};
     };
     const std::size_t imu = *Tree::find_frame("imu");
-    const auto tool = numbers(x.mp, k, x.q, ch::frame<"tool">);
-    const auto on_base = ch::visit_frame<Tree>(imu, [&](auto f) { return numbers(x.mp, k, x.q, f); });
-    const auto world = numbers(x.mp, k, x.q, ch::frame<"map">);
+    const auto tool = numbers(x.mp, k, x.q, x.qd, x.qdd, ch::frame<"tool">);
+    const auto on_base = ch::visit_frame<Tree>(imu, [&](auto f) { return numbers(x.mp, k, x.q, x.qd, x.qdd, f); });
+    const auto world = numbers(x.mp, k, x.q, x.qd, x.qdd, ch::frame<"map">);
     for (std::size_t l = 0; l < L; ++l) {
         INFO("lanes " << L << ", lane " << l);
         const robot<Tree>& r = x.robots[l];
         const ch::kinematics<Tree> k_l = ch::forward_kinematics(m, r.q, r.qd, r.qdd);
-        const auto tool_l = numbers(m, k_l, r.q, ch::frame<"tool">);
-        const auto on_base_l = ch::visit_frame<Tree>(imu, [&](auto f) { return numbers(m, k_l, r.q, f); });
-        const auto world_l = numbers(m, k_l, r.q, ch::frame<"map">);
+        const auto tool_l = numbers(m, k_l, r.q, r.qd, r.qdd, ch::frame<"tool">);
+        const auto on_base_l = ch::visit_frame<Tree>(imu, [&](auto f) { return numbers(m, k_l, r.q, r.qd, r.qdd, f); });
+        const auto world_l = numbers(m, k_l, r.q, r.qd, r.qdd, ch::frame<"map">);
         const auto worst = [&](const auto& a, const auto& b) {
             return std::apply([&](const auto&... x) {
                 return std::apply([&](const auto&... y) { return std::max({lane_error(x, y, l)...}); }, b);

@@ -32,6 +32,7 @@
 #include "ctga/chains/frame_derivatives.hpp"
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/frames.hpp"
+#include "ctga/chains/joint_limits.hpp"
 #include "ctga/chains/minverse.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/rnea.hpp"

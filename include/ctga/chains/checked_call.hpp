@@ -8,7 +8,10 @@
 //   non_finite    a NaN or infinity in the model (a link's placement, inertia, axis or coupling,
 //                 a frame's placement, gravity),
 //                 in q, q̇, q̈, τ, the wrenches, or in the result
-//   not_a_motor   a floating joint's configuration with a zero rotor part (no rigid motion)
+//   not_a_unit_base  a floating joint's eight numbers that are not a unit motor up to rounding (a
+//                 position and quaternion [x y z qx qy qz qw] pasted in: convert them with
+//                 floating_base_configuration, floating_base.hpp)
+//   negative_armature  a joint's armature (rotor inertia) below zero
 // (make_link checked each link's physics when the model was built; a model edited afterwards is
 // checked here for non-finite numbers.) With packs as the scalar (a model_cast model, L robots)
 // every lane is checked on its own: the error is a lane_errors<L>.
@@ -58,7 +61,8 @@ template <class N, class X>
     } else if constexpr (requires { x.links; x.gravity; }) {  // a model: every link's numbers, frames, gravity
         finite_mask<N> ok = finite_all<N>(x.gravity) && finite_all<N>(x.frames);
         boost::hana::for_each(x.links, [&](const auto& l) {
-            ok = ok && finite_all<N>(l.placement) && finite_all<N>(l.inertia) && finite_all<N>(l.joint);
+            ok = ok && finite_all<N>(l.placement) && finite_all<N>(l.inertia) && finite_all<N>(l.joint) &&
+                 finite_all<N>(l.armature);
         });
         return ok;
     } else if constexpr (requires { x.parameters(); }) {  // body_inertia: its ten parameters
@@ -97,18 +101,41 @@ template <class T, std::size_t L>
     return e;
 }
 
-// A floating joint's eight numbers are a motor when its rotor part is not zero (map_of reads any
-// such motor as the rigid motion it encodes).
+// Whether a floating joint's eight numbers g are a unit motor up to rounding (motor.hpp's
+// near_unit, lane by lane for packs). map_of would read any motor with a rotor part as the rigid
+// motion it encodes, so a pose written in another layout (Pinocchio's and ROS's position and
+// quaternion [x y z qx qy qz qw] in the eight numbers) would pass for some other pose.
+template <class T>
+[[nodiscard]] constexpr finite_mask<T> unit_motor(const T* g) noexcept {
+    if constexpr (lane_wise<T>) {
+        using S = typename T::value_type;
+        const T unit = T::generate([&](std::size_t l) {
+            return near_unit(motor<S>{g[0][l], g[1][l], g[2][l], g[3][l], g[4][l], g[5][l], g[6][l], g[7][l]}) ? S(1) : S(0);
+        });
+        return unit == T(S(1));
+    } else {
+        return near_unit(motor<T>{g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7]});
+    }
+}
+
+// Every joint's armature ≥ 0 (negative_armature).
+template <class Tree, class T>
+[[nodiscard]] constexpr finite_mask<T> armature_not_negative(const model<Tree, T>& m) noexcept {
+    finite_mask<T> ok = every<T>();
+    boost::hana::for_each(m.links, [&](const auto& l) {
+        if constexpr (!std::is_empty_v<std::remove_cvref_t<decltype(l.armature)>>) ok = ok && !(l.armature < T(0));
+    });
+    return ok;
+}
+
+// q finite (non_finite) and every floating joint's eight numbers a unit motor (not_a_unit_base).
 template <class Tree, class T>
 [[nodiscard]] constexpr error_of_t<T> check_configuration(const std::array<T, Tree::nq>& q) noexcept {
-    finite_mask<T> rotor = every<T>();
+    finite_mask<T> unit = every<T>();
     for (std::size_t i = 0; i < Tree::size; ++i)
-        if (Tree::nq_of[i] == 8) {
-            const T* g = q.data() + Tree::q_offset[i];
-            rotor = rotor && g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g[3] * g[3] > T(0);
-        }
+        if (Tree::nq_of[i] == 8) unit = unit && unit_motor(q.data() + Tree::q_offset[i]);
     const error_of_t<T> e = first_failure(error_of_t<T>{}, finite_all<T>(q), error_code::non_finite);
-    return first_failure(e, rotor, error_code::not_a_motor);
+    return first_failure(e, unit, error_code::not_a_unit_base);
 }
 }  // namespace algorithm_detail
 
@@ -122,6 +149,7 @@ template <class Algorithm, class Tree, class T, class... Args>
     using namespace algorithm_detail;
     using result = decltype(algorithm(m, q, args...));
     error_of_t<T> e = first_failure(error_of_t<T>{}, finite_all<T>(m), error_code::non_finite);
+    e = first_failure(e, armature_not_negative(m), error_code::negative_armature);
     e = first_of(e, check_configuration<Tree>(q));
     e = first_failure(e, (every<T>() && ... && finite_all<T>(args)), error_code::non_finite);
     if constexpr (!lane_wise<T>) {

@@ -143,7 +143,9 @@ struct tree_motion {
         });
         return out;
     }
-    // every floating joint's eight numbers a unit motor up to rounding (near_unit)
+    // every floating joint's eight numbers a unit motor up to rounding (near_unit); integrate
+    // reports one that is not as not_a_unit_base (checked_call.hpp)
+    static constexpr error_code not_unit_error = error_code::not_a_unit_base;
     [[nodiscard]] constexpr bool unit(const motor_type& q) const noexcept {
         bool ok = true;
         per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t, motor_type&) {

@@ -235,12 +235,21 @@ constexpr motor_map<T> identity_map() noexcept {
 }
 }  // namespace tree_detail
 
+// A joint's armature: the inertia of the rotor that drives a joint of one degree of freedom (a
+// motor's rotor behind its gear, reflected: J_rotor · ratio²), kg m² (revolute) or kg (prismatic).
+// It adds to the joint's own entry of the mass matrix, H_ii + a_i, so RNEA adds a_i q̈_i, CRBA
+// a_i to H_ii and ABA a_i to D_i. Joints of other kinds have none (no_armature: an empty member).
+struct no_armature {};
+template <joint Joint, class T>
+using armature_of = std::conditional_t<Joint::nv == 1, T, no_armature>;
+
 // The run-time parameters of one body.
 template <joint Joint, class T = double>
 struct link_parameters {
     motor_map<T> placement = tree_detail::identity_map<T>();  // joint frame in the parent's
     body_inertia<T> inertia{};                                      // N by (m, h, I_o), body frame
     typename Joint::template parameters<T> joint{};                 // e.g. the unit axis of revolute_about
+    [[no_unique_address]] armature_of<Joint, T> armature{};         // a 1-dof joint's rotor inertia (0: none)
 };
 
 namespace tree_detail {
@@ -371,20 +380,45 @@ template <class T>
     return tree_detail::placement_map(placement);
 }
 
-// The first body whose joint moves (moves<J>) while neither it nor anything it carries has mass,
-// or −1. Such a joint's row of the mass matrix is zero (H singular) and ABA divides by D = 0.
+// Whether a joint of one degree of freedom turns its body (its S a rotation: revolute about a
+// coordinate axis or a run-time axis, or a mimic of one), so that a rotational inertia alone
+// resists it.
+template <class J>
+inline constexpr bool turns = [] {
+    using own = typename joint_detail::axis_owner<J>::type;  // a mimic's followed joint
+    if constexpr (requires { own::component; }) return own::component < 3;
+    else return std::is_base_of_v<revolute_about, own>;
+}();
+
+// The first body whose joint moves (moves<J>) but meets no inertia, or −1: no armature, no mass in
+// its body or below it, and (for a joint that turns) no rotational inertia there either (a link of
+// mass 0 may keep an inertia tensor, as URDF files write it). Such a joint's row of the mass matrix
+// is zero (H singular) and ABA divides by D = 0.
 template <class Tree, class T>
 [[nodiscard]] constexpr int massless_subtree(const model<Tree, T>& m) noexcept {
-    std::array<T, Tree::size> carried{};
-    [&]<std::size_t... I>(std::index_sequence<I...>) { ((carried[I] = m.template link<I>().inertia.mass()), ...); }(
-        std::make_index_sequence<Tree::size>{});
+    std::array<T, Tree::size> mass{}, turning{}, armature{};  // carried mass, rotational inertia (trace of I_o)
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            const auto& l = m.template link<I>();
+            mass[I] = l.inertia.mass();
+            turning[I] = l.inertia.ixx[0] + l.inertia.iyy[0] + l.inertia.izz[0];
+            if constexpr (!std::is_empty_v<decltype(l.armature)>) armature[I] = l.armature;
+        }(), ...);
+    }(std::make_index_sequence<Tree::size>{});
     for (std::size_t i = Tree::size; i-- > 0;)
-        if (Tree::parent[i] >= 0) carried[static_cast<std::size_t>(Tree::parent[i])] += carried[i];
+        if (Tree::parent[i] >= 0) {
+            mass[static_cast<std::size_t>(Tree::parent[i])] += mass[i];
+            turning[static_cast<std::size_t>(Tree::parent[i])] += turning[i];
+        }
     constexpr std::array<bool, Tree::size> moving = []<std::size_t... I>(std::index_sequence<I...>) {
         return std::array<bool, Tree::size>{moves<typename Tree::template joint_at<I>>...};
     }(std::make_index_sequence<Tree::size>{});
+    constexpr std::array<bool, Tree::size> turning_joint = []<std::size_t... I>(std::index_sequence<I...>) {
+        return std::array<bool, Tree::size>{turns<typename Tree::template joint_at<I>>...};
+    }(std::make_index_sequence<Tree::size>{});
     for (std::size_t i = 0; i < Tree::size; ++i)
-        if (moving[i] && !(carried[i] > T(0))) return static_cast<int>(i);
+        if (moving[i] && !(mass[i] > T(0)) && !(armature[i] > T(0)) && !(turning_joint[i] && turning[i] > T(0)))
+            return static_cast<int>(i);
     return -1;
 }
 

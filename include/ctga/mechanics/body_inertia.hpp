@@ -67,11 +67,9 @@ template <class T>
     const T m = b.mass;
     const vec3<T>& c = b.com;
     const vec3<T> h{m * c[0], m * c[1], m * c[2]};
-    const T hc = linear3::dot(h, c);
-    // I_o = I_c + m(|c|² 1 − c cᵀ), the parallel-axis theorem
-    const auto io = [&](int i, int j) { return b.inertia_c[i][j] + (i == j ? hc : T(0)) - h[i] * c[j]; };
+    const mat3<T> io = inertia_about_origin(b, h);
     using s = typename body_inertia<T>::scalar;
-    return {s{m}, s{h[0]}, s{h[1]}, s{h[2]}, s{io(0, 0)}, s{io(1, 1)}, s{io(2, 2)}, s{io(0, 1)}, s{io(0, 2)}, s{io(1, 2)}};
+    return {s{m}, s{h[0]}, s{h[1]}, s{h[2]}, s{io[0][0]}, s{io[1][1]}, s{io[2][2]}, s{io[0][1]}, s{io[0][2]}, s{io[1][2]}};
 }
 
 // The same element with its 24 blades stored.

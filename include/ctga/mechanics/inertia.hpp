@@ -43,9 +43,9 @@ template <class T>
     const vec3<T>& c = b.com;
     const vec3<T> h{m * c[0], m * c[1], m * c[2]};  // first moment m c
     mat6<T> N{};
-    // I_o = I_c − m Ĉ² = I_c + m(|c|² 1 − c cᵀ), the parallel-axis theorem
+    const mat3<T> I_o = inertia_about_origin(b, h);  // I_c − m Ĉ²
     for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) N[i][j] = b.inertia_c[i][j] + (i == j ? linear3::dot(h, c) : T(0)) - h[i] * c[j];
+        for (int j = 0; j < 3; ++j) N[i][j] = I_o[i][j];
     const mat3<T> H = linear3::hat(h);
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {

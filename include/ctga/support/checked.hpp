@@ -36,8 +36,13 @@ enum class error_code : unsigned char {
     not_a_unit_axis,        // a joint axis u with ‖u‖ ≠ 1 beyond rounding
     not_aligned,            // an aligned joint's placement turns (chains::aligned: a pure translation expected)
     zero_direction,         // an axis or direction given as the zero vector
-    massless_subtree,       // a moving joint that carries no mass: H singular, ABA's D = 0 (chains::massless_subtree)
+    massless_subtree,       // a moving joint that meets no inertia: H singular, ABA's D = 0 (chains::massless_subtree)
     unknown_frame,          // a frame name the tree does not have (chains::tree::find_frame)
+    not_a_unit_base,        // a floating joint's 8 numbers are not a unit motor (a pose in another layout?)
+    negative_armature,      // a joint's armature (rotor inertia) below zero
+    limits_reversed,        // a joint limit with lower > upper
+    negative_limit,         // a velocity or effort limit, a damping or a friction below zero
+    unbounded,              // a bound needed (random_configuration) is infinite
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
@@ -59,8 +64,19 @@ enum class error_code : unsigned char {
         case error_code::not_aligned:
             return "ctga: an aligned joint's placement must be a pure translation (its rotation is not the identity)";
         case error_code::massless_subtree:
-            return "ctga: a moving joint carries no mass (its whole subtree is massless): the mass matrix is singular";
+            return "ctga: a moving joint meets no inertia (no mass, or no rotational inertia for a revolute joint, in "
+                   "its subtree, and no armature): the mass matrix is singular";
         case error_code::unknown_frame: return "ctga: the tree has no frame of this name";
+        case error_code::not_a_unit_base:
+            return "ctga: a floating base's 8 numbers are not a unit motor (g g* = 1 fails): for a position and a "
+                   "quaternion [x y z qx qy qz qw] (Pinocchio, ROS) use chains::floating_base_configuration";
+        case error_code::negative_armature: return "ctga: a joint's armature (rotor inertia) must not be negative";
+        case error_code::limits_reversed: return "ctga: a joint limit has lower > upper";
+        case error_code::negative_limit:
+            return "ctga: a joint's velocity or effort limit, damping or friction must not be negative";
+        case error_code::unbounded:
+            return "ctga: a position bound is infinite where a finite one is needed (a prismatic joint or a floating "
+                   "base's position in random_configuration)";
         case error_code::zero_direction: return "ctga: an axis must have a direction (it is the zero vector)";
         case error_code::not_a_motor: return "ctga: not a rigid motion (g g* = 1 fails beyond rounding, or the rotor part is zero)";
         case error_code::did_not_converge:

@@ -19,6 +19,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SCRIPT = os.path.join(HERE, os.pardir, "tools", "urdf_to_ctga.py")
 DATA = os.path.join(HERE, "data")
 AS_GIVEN = "ctga::mass_check::as_given"
+NO_MASS = "no mass in its subtree: the mass matrix would be singular and ABA would divide by zero"
 
 
 def inertial(mass="1.0", xyz="0 0 0", rpy="0 0 0", tensor='ixx="0.1" ixy="0" ixz="0" iyy="0.1" iyz="0" izz="0.1"'):
@@ -129,6 +130,13 @@ def extra_args(block):
     rest = block[block.index("ctga::make_mass_properties("):]
     rest = rest[rest.index("}}}") + 3:rest.index("if (!x)")]
     return rest[len(", " + AS_GIVEN):] if rest.startswith(", " + AS_GIVEN) else rest
+
+
+def limits(header):
+    """({(field, velocity number): value} of make_limits' assignments, its body as text)."""
+    block = header[header.index("make_limits() noexcept {"):]
+    block = block[:block.index("\n}\n") + 3]
+    return {(a, int(k)): float(v) for a, k, v in re.findall(r"l\.(\w+)\[(\d+)\] = T\(([^()]*)\);", block)}, block
 
 
 def dofs(types):
@@ -308,7 +316,8 @@ class Converter(unittest.TestCase):
         # a moving joint with no mass anywhere below it: an error naming the joint
         needle = "no mass in its subtree: the mass matrix would be singular and ABA would divide by zero"
         self.assert_error(chain(link_b=link("b", "")), 'joint "jb"', needle)
-        self.assert_error(chain(link_b=link("b", inertial(mass="0"))), 'joint "jb"', needle)
+        self.assert_error(chain(link_b=link("b", inertial(mass="0", tensor=tensor_attrs(0.0, 0.0, 0.0)))),
+                          'joint "jb"', needle)
         self.assert_error(chain(link_a=link("a", ""), link_b=link("b", "")), 'joint "ja"', needle)
         # mass on a fixed child counts (it is merged into the body); a massless fixed leaf is fine
         text = chain(link_b=link("b", "")).replace("</robot>", joint("jt", "fixed", "b", "t") + link("t") + "</robot>")
@@ -322,6 +331,313 @@ class Converter(unittest.TestCase):
         # the floating base: a robot with no mass at all
         self.assert_error(robot(link("base", ""), joint("j", "fixed", "base", "t"), link("t", "")), 'joint "base"',
                           needle, args=("--floating-base",))
+
+    # ---- moving joints without inertia: --massless, --lock, --armature ----------------------------
+
+    def test_massless_rule_mirrors_cpp(self):
+        # as ctga::chains::massless_subtree: a revolute joint whose subtree has no mass but a rotational
+        # inertia (a mass-0 link's tensor, kept) loads
+        header, lines = self.convert_warned(chain(link_b=link("b", inertial(mass="0"))))
+        self.assertEqual(len(lines), 1)
+        self.assertEqual(mass_properties(body_block(header, 1))[:3],
+                         (0.0, [0.0] * 3, [[0.1, 0.0, 0.0], [0.0, 0.1, 0.0], [0.0, 0.0, 0.1]]))
+        # a prismatic joint needs mass or an armature: a tensor does not resist a translation
+        prismatic = joint("jb", "prismatic", "a", "b")
+        self.assert_error(chain(joint_b=prismatic, link_b=link("b", inertial(mass="0"))), 'joint "jb"', NO_MASS)
+        # an armature resists either
+        header = self.convert(chain(link_b=link("b", "")), "--armature", "jb=0.02")
+        self.assertIn("        m.template link<1>() = *x;\n        m.template link<1>().armature = T(0.02);  // --armature",
+                      header)
+        self.assertIn('// Armatures (a joint\'s rotor inertia: revolute kg m^2, prismatic kg): "jb" 0.02 (--armature).',
+                      header)
+        self.assertEqual(header.count(".armature ="), 1)
+        self.convert(chain(joint_b=prismatic, link_b=link("b", "")), "--armature", "jb=0.5")
+        # an armature of 0 is none
+        self.assert_error(chain(link_b=link("b", "")), 'joint "jb"', NO_MASS, args=("--armature", "jb=0"))
+        self.assert_error(chain(link_b=link("b", "")), 'joint "jb"', NO_MASS, ", and its armature is 0.0 (--armature)",
+                          args=("--armature", "jb=0", "--massless", "armature=0.1"))
+
+    def test_massless_refused_names_the_joint_and_the_options(self):
+        err = self.assert_error(fixture("limited_gripper.urdf"), 'joint "finger_left": ' + NO_MASS,
+                                'the same for "thumb". Options: --massless lock (fix such joints at 0), --massless '
+                                "armature=VALUE (give them a rotor inertia), or per joint --lock finger_left[=VALUE], "
+                                "--armature finger_left=VALUE")
+        self.assertEqual(len(err.splitlines()), 1)  # no warnings before a refusal
+        # many: the first four named, the rest counted
+        hand = [link("base", ""), joint("ja", "revolute", "base", "palm"), link("palm")]
+        for k in range(7):
+            hand += [joint(f"f{k}", "revolute", "palm", f"l{k}"), link(f"l{k}", "")]
+        self.assert_error(robot(*hand), 'joint "f0"', 'the same for "f1", "f2", "f3", "f4" and 2 more')
+        # the option's own errors
+        self.assert_error(chain(), "--massless armature=0: the armature must be positive",
+                          args=("--massless", "armature=0"))
+        self.assert_error(chain(), "--massless armature=-1", "must be positive", args=("--massless", "armature=-1"))
+        self.assert_error(chain(), "--massless fix: expected refuse, lock or armature=VALUE", args=("--massless", "fix"))
+        self.assert_error(chain(), "--massless armature=x", "malformed number", args=("--massless", "armature=x"))
+
+    def test_massless_lock(self):
+        header, lines = self.fixture_header("limited_gripper.urdf", "--massless", "lock", warnings=2)
+        self.assertIn('link "sensor": mass 0 with a nonzero inertia tensor (kept', lines)
+        self.assertIn("options: --name robot --massless lock", header.splitlines()[1])
+        self.assertIn('// Locked joints (fixed at the value: revolute rad, prismatic m; planar, floating: the origin): '
+                      '"finger_left" at 0.0 (--massless lock), "thumb" at 0.2 (--massless lock), "finger_right" at 0.01 '
+                      '(follows "finger_left").', header)
+        # finger_right follows its locked master (and it has mass: merged into the hand's body)
+        self.assertEqual(tree_lines(header), [("-1", "revolute_z"), ("0", "revolute_y"), ("1", "revolute_z"),
+                                              ("2", "revolute_x")])
+        self.assertEqual(names(header, "joint_names"), ["shoulder", "elbow", "wrist", "spinner"])
+        self.assertEqual(frame_lines(header), [("base_link", -1), ("upper", 0), ("forearm", 1), ("hand", 2),
+                                               ("sensor", 2), ("rotor", 3), ("finger_l", 2), ("finger_r", 2),
+                                               ("thumb_link", 2), ("thumb_tip", 2)])
+        # the frames through a locked joint: its origin, then its motion at the value; thumb: 0
+        # clamped into <limit> [0.2, 1.0], about +x after the origin's pitch 0.3
+        R = mm(rpy_matrix_here(0, 0.3, 0), rodrigues(1, 0, 0, 0.2))
+        t, theta, u = frame_motor(header, 8)
+        self.assert_close(t, [0.02, 0.0, 0.06])
+        self.assert_rotation(theta, u, R)
+        t, theta, u = frame_motor(header, 9)
+        self.assert_close(t, [0.02 + mv(R, [0, 0, 0.03])[0], mv(R, [0, 0, 0.03])[1], 0.06 + mv(R, [0, 0, 0.03])[2]])
+        self.assert_rotation(theta, u, R)
+        self.assertEqual(frame_motor(header, 7)[:2], ([0.0, -0.02, 0.08], 0.0))  # -0.01 + 0.01 along -y
+        self.assertIn('// frame 8: link "thumb_link" in body 2 (through "thumb")', header)
+        # the hand's body: the hand, the sensor's tensor (mass 0: no parallel-axis term) and finger_r
+        m, c, I, _ = mass_properties(body_block(header, 2))
+        self.assert_close(m, 0.55)
+        Rs = rpy_matrix_here(0, 0, 0.7)
+        sensor = mm(mm(Rs, [[1e-4, 1e-5, 0.0], [1e-5, 2e-4, 0.0], [0.0, 0.0, 2.5e-4]]), tr(Rs))
+        hand = about_origin(0.5, [0, 0, 0.04], [[4e-4, 0, 0], [0, 3e-4, 0], [0, 0, 2e-4]])
+        finger = about_origin(0.05, [0, -0.02, 0.1], [[1e-5, 0, 0], [0, 1e-5, 0], [0, 0, 2e-6]])
+        expected = [[hand[i][j] + sensor[i][j] + finger[i][j] for j in range(3)] for i in range(3)]
+        self.assert_close(about_origin(m, c, I), expected, 1e-13)
+        self.assert_close(c, [0.0, -0.001 / 0.55, (0.02 + 0.005) / 0.55])
+        # the locked joints' limits are dropped
+        self.assertIn('    // joint "thumb": locked at 0.2, no coordinate, its limits dropped\n', header)
+        self.assertEqual(max(k for _, k in limits(header)[0]), 3)
+
+    def test_massless_armature(self):
+        header, _ = self.fixture_header("limited_gripper.urdf", "--massless", "armature=0.01", warnings=2)
+        self.assertEqual(self.counts(header), (7, 10, 6))
+        self.assertIn("        m.template link<4>() = *x;\n        m.template link<4>().armature = T(0.01);  // --massless "
+                      "armature\n", header)
+        self.assertEqual(header.count(".armature ="), 2)
+        self.assertIn('"finger_left" 0.01 (--massless armature), "thumb" 0.01 (--massless armature).', header)
+        # an explicit armature stands
+        header, _ = self.fixture_header("limited_gripper.urdf", "--massless", "armature=0.01", "--armature",
+                                        "thumb=0.03", warnings=2)
+        self.assertIn('"thumb" 0.03 (--armature), "finger_left" 0.01 (--massless armature).', header)
+        self.assertIn("m.template link<6>().armature = T(0.03);  // --armature", header)
+        # a massless mimic has no coordinate, so no armature: lock it, or make it independent
+        text = fixture("limited_gripper.urdf").replace('<mass value="0.05"/>', '<mass value="0"/>')
+        self.assert_error(text, 'joint "finger_right": no mass in its subtree, and --massless armature cannot help',
+                          "a <mimic> joint has no coordinate", "--massless lock, --lock finger_right, or --mimic "
+                          "independent", args=("--massless", "armature=0.01"))
+        rc, header, err = self.run_script(text, "--massless", "armature=0.01", "--mimic", "independent")
+        self.assertEqual(rc, 0, err)
+        self.assertIn('"finger_right" 0.01 (--massless armature)', header)
+        self.assertEqual(header.count(".armature ="), 3)
+        # a planar joint: three coordinates, no single armature
+        text = chain(link_b=link("b")).replace("</robot>", joint("slide", "planar", "b", "p") + link("p", "") +
+                                               "</robot>")
+        self.assert_error(text, 'joint "slide": no mass in its subtree, and --massless armature cannot help',
+                          "this one is planar (use --massless lock or --lock slide)",
+                          args=("--massless", "armature=0.01"))
+        header = self.convert(text, "--massless", "lock")
+        self.assertIn('"slide" at 0.0 (--massless lock)', header)
+        self.assertEqual(frame_lines(header)[-1], ("p", 1))
+
+    def test_lock(self):
+        header = self.convert(chain(), "--lock", "jb=0.5")
+        self.assertEqual(tree_lines(header), [("-1", "revolute_z")])
+        self.assertEqual(frame_lines(header), [("base", -1), ("a", 0), ("b", 0)])
+        self.assertIn("options: --name robot --lock jb=0.5", header.splitlines()[1])
+        self.assertIn('"jb" at 0.5 (--lock)', header)
+        t, theta, u = frame_motor(header, 2)
+        self.assertEqual(t, [0.0, 0.0, 0.3])
+        self.assert_rotation(theta, u, rodrigues(0, 1, 0, 0.5))
+        # b's link merged at its locked pose: 2 kg, centre halfway, 0.1 1 each (turned: still 0.1 1)
+        m, c, I, _ = mass_properties(body_block(header, 0))
+        self.assertEqual((m, c), (2.0, [0.0, 0.0, 0.15]))
+        self.assert_close(I, [[0.2 + 0.045, 0, 0], [0, 0.2 + 0.045, 0], [0, 0, 0.2]], 1e-15)
+        # the default: 0 (a joint next to the world: its link lumped into the world)
+        header = self.convert(chain(), "--lock", "ja")
+        self.assertIn('"ja" at 0.0 (--lock)', header)
+        self.assertIn('their inertia dropped: "a" (mass 1.0)', header)
+        self.assertEqual(tree_lines(header), [("-1", "revolute_y")])
+        # a prismatic joint slides; --keep-fixed keeps the locked link as a body on a fixed joint
+        text = chain(joint_b=joint("jb", "prismatic", "a", "b", xyz="0 0 0.3", axis="0 1 0"))
+        self.assertEqual(frame_motor(self.convert(text, "--lock", "jb=0.25"), 2)[:2], ([0.0, 0.25, 0.3], 0.0))
+        header = self.convert(chain(), "--lock", "jb=0.5", "--keep-fixed")
+        self.assertEqual(tree_lines(header), [("-1", "revolute_z"), ("0", "fixed")])
+        t, theta, u = motor(body_block(header, 1))
+        self.assertEqual(t, [0.0, 0.0, 0.3])
+        self.assert_rotation(theta, u, rodrigues(0, 1, 0, 0.5))
+        self.assertIn("(revolute, locked at 0.5)", body_block(header, 1))
+        self.assertIn("then the joint's motion at its locked value 0.5", body_block(header, 1))
+        # the default clamped into <limit>; a value outside it warns
+        limited = chain(joint_b=joint("jb", "revolute", "a", "b", axis="0 1 0",
+                                      extra='<limit lower="0.2" upper="1.0" effort="1" velocity="1"/>'))
+        self.assertIn('"jb" at 0.2 (--lock)', self.convert(limited, "--lock", "jb"))
+        self.assertIn('"jb" at -0.3 (--lock)', self.convert(limited.replace('lower="0.2" upper="1.0"',
+                                                                             'lower="-1" upper="-0.3"'), "--lock", "jb"))
+        _, lines = self.convert_warned(limited, "--lock", "jb=1.5")
+        self.assertEqual(lines, ['urdf_to_ctga: warning: joint "jb" is locked at 1.5, outside its <limit> [0.2, 1.0]'])
+        # a planar or floating joint locks at its origin, without a value
+        planar = chain(joint_b=joint("jb", "planar", "a", "b", xyz="0 0 0.3"))
+        self.assertEqual(frame_motor(self.convert(planar, "--lock", "jb"), 2)[:2], ([0.0, 0.0, 0.3], 0.0))
+        self.assert_error(planar, "--lock jb=0.1: joint \"jb\" is planar: it locks at its origin, without a value "
+                          "(--lock jb)", args=("--lock", "jb=0.1"))
+        self.convert(chain(joint_b=joint("jb", "floating", "a", "b")), "--lock", "jb")
+        # errors naming the option and the joint
+        self.assert_error(chain(), '--lock nowhere: no joint named "nowhere"', args=("--lock", "nowhere"))
+        self.assert_error(chain(), '--lock nowhere=0.5: no joint named "nowhere"', args=("--lock", "nowhere=0.5"))
+        self.assert_error(chain(), '--lock jb=0.2: joint "jb" is named twice', args=("--lock", "jb", "--lock", "jb=0.2"))
+        self.assert_error(chain(), "--lock jb=x", "malformed number", args=("--lock", "jb=x"))
+        text = chain().replace("</robot>", joint("jt", "fixed", "b", "t") + link("t") + "</robot>")
+        self.assert_error(text, '--lock jt: joint "jt" is fixed already', args=("--lock", "jt"))
+        # a joint whose name holds '=' is named whole
+        text = chain(joint_b=joint("j=b", "revolute", "a", "b"))
+        self.assertIn('"j=b" at 0.0 (--lock)', self.convert(text, "--lock", "j=b"))
+        self.assertIn('"j=b" at 0.5 (--lock)', self.convert(text, "--lock", "j=b=0.5"))
+
+    def test_lock_and_mimic(self):
+        # a locked master takes its mimics along (m v + o)
+        header = self.convert(self.gripper(), "--lock", "left=0.02")
+        self.assertIn('"left" at 0.02 (--lock), "right" at -0.01 (follows "left")', header)
+        self.assertEqual(tree_lines(header), [("-1", "revolute_z")])
+        self.assertEqual(frame_motor(header, 2)[0], [0.0, 0.01, 0.0])  # fr: -0.01 along -y
+        # a mimic locked alone stops following its master (its default: m 0 + o)
+        header, lines = self.convert_warned(self.gripper(), "--lock", "right")
+        self.assertIn('"right" at 0.01 (--lock)', header)
+        self.assertEqual(lines, ['urdf_to_ctga: warning: joint "right" (a <mimic> of "left") is locked at 0.01: it no '
+                                 'longer follows "left"'])
+        self.assertEqual(tree_lines(header), [("-1", "revolute_z"), ("0", "prismatic_y")])
+        # with --mimic independent, locking the master locks it alone
+        header = self.convert(self.gripper(), "--lock", "left", "--mimic", "independent")
+        self.assertEqual(len(tree_lines(header)), 2)
+        self.assertNotIn("follows", header)
+
+    def test_armature_errors(self):
+        self.assert_error(chain(), '--armature nowhere=0.1: no joint named "nowhere"', args=("--armature", "nowhere=0.1"))
+        self.assert_error(chain(), "--armature jb: expected JOINT=VALUE", args=("--armature", "jb"))
+        self.assert_error(chain(), "--armature jb=-0.1: the armature is negative", args=("--armature", "jb=-0.1"))
+        self.assert_error(chain(), '--armature jb=0.2: joint "jb" is named twice',
+                          args=("--armature", "jb=0.1", "--armature", "jb=0.2"))
+        text = chain().replace("</robot>", joint("jt", "fixed", "b", "t") + link("t") + "</robot>")
+        self.assert_error(text, '--armature jt=0.1: joint "jt" is fixed: armature is for revolute, continuous and '
+                          "prismatic joints", args=("--armature", "jt=0.1"))
+        self.assert_error(self.gripper(), '--armature right=0.1: joint "right" mimics "left": it has no coordinate of '
+                          'its own (give the armature to "left", or use --mimic independent)',
+                          args=("--armature", "right=0.1"))
+        self.assertIn("m.template link<1>().armature = T(0.1);",
+                      self.convert(self.gripper(), "--armature", "right=0.1", "--mimic", "independent"))
+        self.assert_error(chain(), '--armature jb=0.1: joint "jb" is locked (--lock): a locked joint has no armature',
+                          args=("--lock", "jb", "--armature", "jb=0.1"))
+
+    def test_mimic_missing(self):
+        text = self.gripper('<mimic joint="nobody"/>', extra=joint("r2", "prismatic", "hand", "f2", axis="0 0 1",
+                                                                   extra='<mimic joint="left"/>') + link("f2"))
+        self.assert_error(text, 'joint "right": <mimic joint="nobody">: no such joint (--mimic-missing independent makes '
+                          "such a joint an ordinary independent joint; --mimic independent does so for every <mimic> "
+                          "joint)")
+        header, lines = self.convert_warned(text, "--mimic-missing", "independent")
+        self.assertEqual(lines, ['urdf_to_ctga: warning: joint "right": <mimic joint="nobody">: no such joint; joint '
+                                 '"right" is an independent joint (--mimic-missing independent)'])
+        self.assertEqual(tree_lines(header), [("-1", "revolute_z"), ("0", "prismatic<ctga::chains::axis::minus_y>"),
+                                              ("0", "prismatic_y"), ("0", "mimic<ctga::chains::prismatic_z, 2>")])
+        self.assertIn('// --mimic-missing independent: the <mimic> joints "right" name no joint: they are independent '
+                      "coordinates.", header)
+        self.assertIn("--mimic-missing independent", header.splitlines()[1])
+        self.assertIn("// v 1: joint \"right\" (body 1, prismatic)", header)
+
+    # ---- mass properties: mass-0 tensors, the parallel-axis sum -----------------------------------------
+
+    def test_mass_zero_tensor_is_kept(self):
+        # merged into a body with mass: the rotated tensor adds, no parallel-axis term, the centre of
+        # mass is the massive parts'
+        zero = link("t", inertial(mass="0", xyz="0.3 0 0", tensor=tensor_attrs(1e-3, 2e-3, 3e-3, ixy=1e-4)))
+        text = chain(link_b=link("b", inertial(mass="2", xyz="0.1 0 0"))).replace(
+            "</robot>", joint("jt", "fixed", "b", "t", xyz="0.5 0 0", rpy="0.2 0 0.4") + zero + "</robot>")
+        header, lines = self.convert_warned(text)
+        self.assertEqual(len(lines), 1)
+        m, c, I, as_given = mass_properties(body_block(header, 1))
+        self.assertEqual((m, c, as_given), (2.0, [0.1, 0.0, 0.0], True))
+        R = rpy_matrix_here(0.2, 0, 0.4)
+        T = mm(mm(R, [[1e-3, 1e-4, 0.0], [1e-4, 2e-3, 0.0], [0.0, 0.0, 3e-3]]), tr(R))
+        self.assert_close(I, [[0.1 + T[i][j] if i == j else T[i][j] for j in range(3)] for i in range(3)], 1e-15)
+        # a body with no mass and a tensor: (0, 0, the tensor), as given
+        header, _ = self.convert_warned(chain(link_b=link("b", inertial(mass="0", xyz="0.1 0.2 0.3",
+                                                                       tensor=tensor_attrs(1e-3, 2e-3, 3e-3)))))
+        self.assertEqual(mass_properties(body_block(header, 1)),
+                         (0.0, [0.0] * 3, [[1e-3, 0.0, 0.0], [0.0, 2e-3, 0.0], [0.0, 0.0, 3e-3]], True))
+        # the tensor is checked as any link's
+        _, lines = self.convert_warned(chain(link_b=link("b", inertial(mass="0", tensor=tensor_attrs(0.1, 0.1, 0.3)))))
+        self.assertIn('link "b": principal moments [0.1, 0.1, 0.3] violate the triangle inequality', lines[1])
+
+    def test_parallel_axis_far_along_an_axis(self):
+        # two 1 kg parts 1e8 m either side along x, 1e-3 m off it along y: I_xx about the centre is
+        # 2 (1e-3)^2 plus the parts' own, which |d|^2 - d_x^2 = (1e16 + 1e-6) - 1e16 would lose
+        far = chain(link_b=link("b", inertial(mass="1", xyz="1e8 1e-3 0", tensor=tensor_attrs(1e-6, 1e-6, 1e-6))))
+        far = far.replace("</robot>", joint("jt", "fixed", "b", "t") +
+                          link("t", inertial(mass="1", xyz="-1e8 -1e-3 0", tensor=tensor_attrs(1e-6, 1e-6, 1e-6))) +
+                          "</robot>")
+        rc, header, err = self.run_script(far)
+        self.assertEqual(rc, 0, err)
+        m, c, I, _ = mass_properties(body_block(header, 1))
+        self.assertEqual((m, c), (2.0, [0.0, 0.0, 0.0]))
+        self.assert_close(I[0][0], 4e-6, 1e-12)
+        self.assert_close(I[1][1], 2e16, 1e-15)
+        self.assert_close(I[0][1], -2e5, 1e-15)
+
+    # ---- joint limits ------------------------------------------------------------------------------------
+
+    def test_limits(self):
+        header, _ = self.fixture_header("limited_gripper.urdf", "--massless", "armature=0.01", warnings=2)
+        values, block = limits(header)
+        self.assertEqual(values, {
+            ("lower", 0): -2.5, ("upper", 0): 2.5, ("velocity", 0): 3.0, ("effort", 0): 80.0, ("damping", 0): 0.5,
+            ("friction", 0): 0.2,
+            ("lower", 1): -0.3, ("upper", 1): 2.0, ("velocity", 1): 4.0, ("effort", 1): 40.0, ("damping", 1): 0.1,
+            ("velocity", 2): 6.0, ("effort", 2): 10.0,
+            ("friction", 3): 0.01,
+            ("lower", 4): 0.0, ("upper", 4): 0.04, ("velocity", 4): 0.1, ("effort", 4): 20.0,
+            ("lower", 5): 0.2, ("upper", 5): 1.0, ("velocity", 5): 1.0, ("effort", 5): 5.0})
+        self.assertIn("template <class T = double>\nconstexpr ctga::checked<ctga::chains::joint_limits<tree, T>> "
+                      "make_limits() noexcept {\n    auto l = ctga::chains::unlimited<tree, T>();\n", header)
+        self.assertTrue(block.endswith("    return ctga::chains::check_limits(l);\n}\n"))
+        for comment in ('// v 0: joint "shoulder" (body 0, revolute)\n', '// v 1: joint "elbow" (body 1, revolute): no friction',
+                        '// v 2: joint "wrist" (body 2, continuous): no <dynamics>',
+                        '// v 3: joint "spinner" (body 3, continuous): no <limit>; no damping',
+                        '// joint "finger_right" (body 5, a <mimic> of "finger_left": no coordinate, its limits dropped)'):
+            self.assertIn(comment, block)
+        # a continuous joint's bounds are not read (not even checked); a missing bound is none
+        text = chain(joint_b=joint("jb", "continuous", "a", "b", extra='<limit lower="1" upper="-1" velocity="2"/>'))
+        values, block = limits(self.convert(text))
+        self.assertEqual(values, {("velocity", 1): 2.0})
+        self.assertIn('// v 1: joint "jb" (body 1, continuous): no effort; no <dynamics>; continuous: its lower, upper '
+                      "ignored", block)
+        values, block = limits(self.convert(chain(joint_b=joint("jb", "prismatic", "a", "b",
+                                                                extra='<limit lower="-0.1"/><dynamics damping="3" K="9"/>'))))
+        self.assertEqual(values, {("lower", 1): -0.1, ("damping", 1): 3.0})
+        self.assertIn("no upper, velocity, effort; no friction", block)
+        # floating and planar joints: unlimited
+        block = limits(self.convert(chain(joint_b=joint("jb", "planar", "a", "b")), "--floating-base"))[1]
+        self.assertIn('// v 0..5: joint "base" (body 0, floating base): unlimited', block)
+        self.assertIn('// v 7: joint "jb_x" (body 2, planar, translation along u1): unlimited', block)
+        # errors naming the joint: bounds reversed, negative numbers, malformed numbers, two <limit>
+        self.assert_error(chain(joint_b=joint("jb", "revolute", "a", "b", extra='<limit lower="1" upper="-1"/>')),
+                          'joint "jb": <limit lower="1.0" upper="-1.0">: lower > upper')
+        self.assert_error(chain(joint_b=joint("jb", "revolute", "a", "b", extra='<limit velocity="-1"/>')),
+                          'joint "jb": <limit velocity> -1.0 is negative')
+        self.assert_error(chain(joint_b=joint("jb", "revolute", "a", "b", extra='<dynamics friction="-0.5"/>')),
+                          'joint "jb": <dynamics friction> -0.5 is negative')
+        self.assert_error(chain(joint_b=joint("jb", "revolute", "a", "b", extra='<limit effort="1e"/>')),
+                          'joint "jb": <limit effort>', "malformed number")
+        self.assert_error(chain(joint_b=joint("jb", "revolute", "a", "b", extra="<limit/><limit/>")),
+                          'joint "jb": more than one <limit>')
+        # a fixed joint's limits are not read
+        text = chain().replace("</robot>", joint("jt", "fixed", "b", "t", extra='<limit lower="x"/>') + link("t") +
+                               "</robot>")
+        self.convert(text)
 
     def test_zero_axis(self):
         self.assert_error(chain(joint_b=joint("jb", "revolute", "a", "b", axis="0 0 0")), 'joint "jb"', "axis is zero")
@@ -399,7 +715,8 @@ class Converter(unittest.TestCase):
             takes_axis = kind in ("revolute_about", "prismatic_along")
             self.assertEqual("ctga::vec3<T>{" in extra_args(body_block(header, body)), takes_axis, body)
         self.assertIn('their inertia dropped: "base" (mass 7.0)', header)
-        self.assertIn("Ignored: joint limits", header)
+        self.assertIn("Joint limits and <dynamics>: make_limits<T>() (below). Ignored: <safety_controller>", header)
+        self.assertNotIn("Ignored: joint limits", header)
         self.assertIn("--keep-fixed", header.splitlines()[1])
         self.assertIn("m.gravity = ctga::vec3<T>{T(0.0), T(0.0), T(-9.81)};", header)
         self.assertTrue(header.startswith("// Generated by tools/urdf_to_ctga.py from robot.urdf; do not edit.\n"))
@@ -784,7 +1101,7 @@ class Converter(unittest.TestCase):
         t, theta, u = motor(body_block(header, 1))
         self.assertEqual(t, [0.2, -0.1, 0.3])
         self.assert_rotation(theta, u, rpy_matrix_here(0.3, -0.2, 0.5))
-        self.assertIn("--keep-fixed: every link on a fixed joint is its own body", header)
+        self.assertIn("--keep-fixed: every link on a fixed (or locked) joint is its own body", header)
 
     # ---- inertia policy ------------------------------------------------------------------------
 
@@ -812,11 +1129,12 @@ class Converter(unittest.TestCase):
         _, lines = self.convert_warned(text)
         self.assertEqual(len(lines), 3)
         self.assertIn('body 1 "b" (link "b" with the merged links "camera"): lumped principal moments', lines[2])
-        # mass 0 with a tensor: massless, with a warning
+        # mass 0 with a tensor: the tensor is kept (test_mass_zero_tensor_is_kept), with a warning
         _, lines = self.convert_warned(chain().replace(
             "</robot>", joint("jt", "fixed", "b", "t") + link("t", inertial(mass="0")) + "</robot>"))
-        self.assertEqual(lines, ['urdf_to_ctga: warning: link "t": mass 0 with a nonzero inertia tensor '
-                                 "(taken as massless)"])
+        self.assertEqual(lines, ['urdf_to_ctga: warning: link "t": mass 0 with a nonzero inertia tensor (kept, as '
+                                 "Pinocchio does: it adds to its body's rotational inertia, without a parallel-axis "
+                                 "term)"])
         # inertia lumped into the world is not checked (it is dropped)
         self.convert(robot(link("base", inertial(tensor=bad_triangle)), joint("ja", "revolute", "base", "a"),
                            link("a")))

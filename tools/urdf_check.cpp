@@ -1,16 +1,20 @@
 // The checker of tools/urdf_check.py: one robot header from tools/urdf_to_ctga.py (included as
-// CTGA_ROBOT_HEADER, namespace CTGA_ROBOT), its model built, and the self-consistency of the
+// CTGA_ROBOT_HEADER, namespace CTGA_ROBOT), its model and its joint limits built (make_model,
+// make_limits: limits=yes when check_limits accepts them), and the self-consistency of the
 // dynamics at random states (a fixed seed), printed as one line of key=value pairs:
 //   round_trip   max over states of |ABA(q, q̇, RNEA(q, q̇, q̈)) − q̈| / |q̈|
 //   split        |H q̈ + C − τ| / |τ|, H from CRBA, C = RNEA(q, q̇, 0)
 //   spd          whether H is symmetric (|H − Hᵀ| / |H| ≤ 1e-12) and Cholesky factors it
 //   power        |dE/dt − q̇ᵀτ| / |q̇ᵀτ| at q̈ = ABA(τ): dE/dt = Σ v_i·(N_i a_i) − M g·ċ (the bodies'
-//                kinetic energy rate from their true accelerations, the potential's from the
-//                centre of mass's velocity), an identity no algorithm shares with ABA
+//                kinetic energy rate from their true accelerations, plus Σ a_k q̇_k q̈_k of the joints'
+//                armatures, the potential's from the centre of mass's velocity), an identity no
+//                algorithm shares with ABA
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <random>
+#include <type_traits>
+#include <utility>
 
 #include CTGA_ROBOT_HEADER
 
@@ -36,6 +40,15 @@ int main() {
         return 1;
     }
     const ch::model<tree> m = *built;
+    const bool limits = static_cast<bool>(robot::make_limits<double>());
+    // each velocity number's armature (0: none; only 1-dof joints have one)
+    ch::joint_vector<tree> armature{};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            if constexpr (!std::is_empty_v<decltype(m.template link<I>().armature)>)
+                armature[tree::v_offset[I]] = m.template link<I>().armature;
+        }(), ...);
+    }(std::make_index_sequence<tree::size>{});
     std::mt19937_64 rng(2027);
     std::uniform_real_distribution<double> u(-1, 1);
     double round_trip = 0, split = 0, power = 0, asym = 0;
@@ -86,15 +99,16 @@ int main() {
         [&]<std::size_t... I>(std::index_sequence<I...>) {
             ((dT += ctga::pairing(ctga::momentum(m.template link<I>().inertia, k.a[I]), k.v[I])), ...);
         }(std::make_index_sequence<tree::size>{});
+        for (std::size_t i = 0; i < tree::nv; ++i) dT += armature[i] * qd[i] * a2[i];
         const auto com = ch::center_of_mass(m, k);
         const double dV = -com.mass * (m.gravity[0] * com.velocity[0] + m.gravity[1] * com.velocity[1] + m.gravity[2] * com.velocity[2]);
         double P = 0, scale = 0;
         for (std::size_t i = 0; i < tree::nv; ++i) P += qd[i] * tau2[i], scale += std::abs(qd[i] * tau2[i]);
         power = worst(power, std::abs(dT + dV - P) / scale);
     }
-    std::printf("bodies=%zu frames=%zu nq=%zu nv=%zu mimic=%d mass=%.6g round_trip=%.1e split=%.1e spd=%s asym=%.1e power=%.1e\n",
+    std::printf("bodies=%zu frames=%zu nq=%zu nv=%zu mimic=%d mass=%.6g limits=%s round_trip=%.1e split=%.1e spd=%s asym=%.1e power=%.1e\n",
                 tree::size, tree::frame_count, tree::nq, tree::nv, int(tree::has_mimic),
-                ch::center_of_mass(m, ch::forward_kinematics(m, ch::configuration<tree>{})).mass, round_trip, split,
-                spd ? "yes" : "no", asym, power);
-    return round_trip <= 1e-10 && split <= 1e-10 && spd && asym <= 1e-12 && power <= 1e-10 ? 0 : 2;
+                ch::center_of_mass(m, ch::forward_kinematics(m, ch::configuration<tree>{})).mass, limits ? "yes" : "no",
+                round_trip, split, spd ? "yes" : "no", asym, power);
+    return limits && round_trip <= 1e-10 && split <= 1e-10 && spd && asym <= 1e-12 && power <= 1e-10 ? 0 : 2;
 }

@@ -5,19 +5,28 @@ compile time and peak memory of the checker, and the self-consistency of the dyn
 RNEA's τ back to q̈, H q̈ + C = τ, H symmetric positive definite, dE/dt = q̇ᵀτ), or exactly why it
 was refused (the converter's or the compiler's first error).
 
-    python3 tools/urdf_check.py FOLDER [--floating-base] [--also-floating] [--cxx g++] [-- OPTIONS...]
+    python3 tools/urdf_check.py FOLDER [--floating-base] [--also-floating] [--options TABLE]
+                                [--exclude PATTERN ...] [--cxx g++] [-- OPTIONS...]
 
-OPTIONS after `--` go to urdf_to_ctga.py for every robot. --also-floating adds a second row for
-each robot converted with --floating-base. Prints a Markdown table; exit status 1 if any robot
-was refused or failed a check (tolerances: 1e-10 relative; symmetry 1e-12).
+OPTIONS after `--` go to urdf_to_ctga.py for every robot. --options TABLE gives options per robot:
+each line of the file TABLE is a file-name pattern (fnmatch, e.g. romeo__*.urdf) and the options
+for the robots it matches (shell words; '#' starts a comment); a robot takes the options of every
+line that matches it, in order, after those of `--`. tools/urdf_options_erd.txt is the table for
+example-robot-data's collection (the options a user would pick per robot). --exclude skips the
+robots a pattern matches (repeatable; e.g. a file that is not a robot). --also-floating adds a
+second row for each robot converted with --floating-base. Prints a Markdown table; exit status 1
+if any robot was refused or failed a check (tolerances: 1e-10 relative; symmetry 1e-12; the
+joint limits must pass check_limits).
 
 Standard library only; needs the compiler and /usr/bin/time.
 """
 
 import argparse
+import fnmatch
 import glob
 import os
 import re
+import shlex
 import subprocess
 import sys
 import tempfile
@@ -59,6 +68,17 @@ def check(urdf, options, cxx, tmp):
     return row
 
 
+def read_table(path):
+    """[(pattern, [options])] of an options table (see the module's docstring)."""
+    rows = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            words = shlex.split(line, comments=True)
+            if words:
+                rows.append((words[0], words[1:]))
+    return rows
+
+
 def main(argv=None):
     argv = sys.argv[1:] if argv is None else argv
     passthrough = []
@@ -69,20 +89,30 @@ def main(argv=None):
     ap.add_argument("folder")
     ap.add_argument("--floating-base", action="store_true", help="convert every robot with --floating-base")
     ap.add_argument("--also-floating", action="store_true", help="and each also with --floating-base")
+    ap.add_argument("--options", metavar="TABLE", help="a file of per-robot options: PATTERN OPTIONS... per line")
+    ap.add_argument("--exclude", action="append", default=[], metavar="PATTERN",
+                    help="skip the robots whose file name matches PATTERN (fnmatch); repeatable")
     ap.add_argument("--cxx", default=os.environ.get("CXX", "g++"))
     args = ap.parse_args(argv)
-    files = sorted(glob.glob(os.path.join(args.folder, "*.urdf")))
+    try:
+        table = read_table(args.options) if args.options else []
+    except (OSError, ValueError) as e:
+        print(f"urdf_check: {args.options}: {e}", file=sys.stderr)
+        return 1
+    files = [f for f in sorted(glob.glob(os.path.join(args.folder, "*.urdf")))
+             if not any(fnmatch.fnmatch(os.path.basename(f), p) for p in args.exclude)]
     if not files:
         print(f"urdf_check: no *.urdf in {args.folder}", file=sys.stderr)
         return 1
     runs = []
     for f in files:
-        base = passthrough + (["--floating-base"] if args.floating_base else [])
+        base = passthrough + [o for pattern, opts in table if fnmatch.fnmatch(os.path.basename(f), pattern) for o in opts]
+        base += ["--floating-base"] if args.floating_base and "--floating-base" not in base else []
         runs.append((f, base))
-        if args.also_floating and not args.floating_base:
+        if args.also_floating and "--floating-base" not in base:
             runs.append((f, base + ["--floating-base"]))
     cols = ["robot", "options", "result", "bodies", "frames", "nq", "nv", "mimic", "warnings", "compile", "memory",
-            "round_trip", "split", "spd", "power"]
+            "limits", "round_trip", "split", "spd", "power"]
     print("| " + " | ".join(cols) + " |")
     print("|" + " --- |" * len(cols))
     bad = 0

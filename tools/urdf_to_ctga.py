@@ -4,6 +4,7 @@ parameters (a ctga::chains::model), in one header.
 
     python3 tools/urdf_to_ctga.py robot.urdf --name arm7 -o arm7.hpp
     python3 tools/urdf_to_ctga.py dog.urdf --name dog --floating-base --gravity 0 0 -9.81
+    python3 tools/urdf_to_ctga.py romeo.urdf --name romeo --floating-base --massless lock
 
 The header declares, in namespace NAME (or --namespace):
 
@@ -13,6 +14,8 @@ The header declares, in namespace NAME (or --namespace):
     inline constexpr std::array<std::string_view, tree::size> joint_names{...};  // URDF joint names
     template <class T = double>
     constexpr ctga::checked<ctga::chains::model<tree, T>> make_model() noexcept;
+    template <class T = double>
+    constexpr ctga::checked<ctga::chains::joint_limits<tree, T>> make_limits() noexcept;
 
 How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
   * Bodies. A body is a link on a moving joint (revolute, continuous, prismatic, floating, planar;
@@ -30,9 +33,12 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     of a merged link are placed through it. The body's mass properties are the exact sum, in the
     body frame: total mass m = sum m_k, centre of mass c = sum m_k c_k / m, and the inertia about c
     by the parallel-axis theorem, I = sum R_k I_k R_k^T + m_k (|d_k|^2 1 - d_k d_k^T), d_k = c_k - c
-    (c_k, R_k: link k's centre of mass and axes in the body frame). A massless link adds nothing.
-    Inertia lumped into the world is dropped (the header lists those links). --keep-fixed instead
-    keeps every link on a fixed joint as its own body on a `fixed` joint (its own mass properties).
+    (c_k, R_k: link k's centre of mass and axes in the body frame; the diagonal's |d|^2 - d_a^2 is
+    summed as the other two squares, which do not cancel when d lies far along axis a). A link
+    without <inertial> adds nothing; a link of mass 0 adds its tensor R_k I_k R_k^T and nothing else
+    (no parallel-axis term, no share of the centre of mass: as Pinocchio does). Inertia lumped into
+    the world is dropped (the header lists those links). --keep-fixed instead keeps every link on a
+    fixed joint as its own body on a `fixed` joint (its own mass properties).
   * Every URDF link is a named frame: after the bodies, the tree lists
     fixed_frame<"link", body> for every link, depth first with the root first; body is the body the
     link belongs to (-1: the world) and make_model sets m.frames[k] to the link's placement in that
@@ -58,26 +64,50 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     its own; MasterBody is the master joint's body (before or after the mimic's own body in the
     depth-first order, as the tree has it). Errors (naming the joint): the master does not exist,
     is not revolute, continuous or prismatic, or is itself a mimic; a mimic on a joint that is not
-    revolute, continuous or prismatic (on a fixed joint it is ignored with a warning: nothing moves). --mimic independent instead makes mimic joints ordinary independent joints (the
-    <mimic> element is then ignored once its numbers parse).
+    revolute, continuous or prismatic (on a fixed joint it is ignored with a warning: nothing
+    moves). --mimic independent instead makes mimic joints ordinary independent joints (the <mimic>
+    element is then ignored once its numbers parse). --mimic-missing independent does so only for
+    a <mimic> naming a joint that does not exist (a warning names each; e.g. a hand whose <mimic>
+    elements lost the prefix of their joints' names); the others stay coupled.
   * --floating-base: the root link becomes body 0 on a floating joint (identity placement) named
     after the root link (joint_names[0]; "_joint" appended if a URDF joint has that name). Without
     it the root link is the fixed world.
   * Mass properties. A link's <inertial>: mass, centre of mass = <origin xyz>, and the tensor about
     the centre of mass rotated into the link frame, I = R_rpy I_inertial R_rpy^T. A link without
-    <inertial> is massless, and so is a link of mass 0 (its tensor, if not zero, is ignored, with
-    a warning). A body whose total mass is 0 is massless:
-    make_mass_properties(0, {0, 0, 0}, zeros, mass_check::as_given). A moving joint whose whole
-    subtree (its body and every descendant) has no mass is an error naming the joint (the mass
-    matrix would be singular and ABA would divide by zero; mimic joints and a planar joint's
-    virtual bodies count as moving, and name their URDF joint); make_model also ends with
-    ctga::chains::massless_subtree, the same check on the C++ side.
+    <inertial> is massless; a link of mass 0 keeps its tensor, as written (a warning says so: Bolt's
+    feet, a motor's rotor). A body whose total mass is 0 is built as
+    make_mass_properties(0, {0, 0, 0}, I, mass_check::as_given), I its mass-0 links' tensors (zero
+    without them).
+  * Moving joints with no inertia below them. As ctga::chains::massless_subtree (which make_model
+    also ends with): a moving joint (mimic joints and a planar joint's virtual bodies count, and
+    name their URDF joint) needs mass in its subtree (its body and every descendant), or an
+    armature, or, for a joint that turns (revolute, continuous, a planar joint's rotation), a
+    rotational inertia there (a mass-0 link's tensor); else the mass matrix would be singular and
+    ABA would divide by zero. --massless chooses what happens to such joints:
+      refuse (the default): an error naming the first (and counting the others) and the options;
+      lock: each is locked at 0 (below), and a locked master takes its mimics along;
+      armature=VALUE: each 1-dof joint gets the armature VALUE (kg m^2 revolute, kg prismatic); a
+        mimic joint (no coordinate, so no armature) or a planar or floating joint is then an error
+        naming it and the ways out (--massless lock, --lock JOINT, --mimic independent).
+  * Locks: --lock JOINT[=VALUE] (repeatable) makes a moving joint fixed at VALUE (rad or m; the
+    default is 0 clamped into its <limit>; a planar or floating joint locks at its origin and takes
+    no VALUE; a VALUE outside <limit> warns). Its child link is then placed at its origin followed
+    by the joint's motion at VALUE (a turn about or a slide along its axis) and merged like a link
+    on a fixed joint (kept as a fixed body with --keep-fixed); every link stays a frame. The
+    <mimic> joints of a locked master are locked at m VALUE + o; a mimic locked alone is fixed at
+    m 0 + o by default and no longer follows its master (a warning). The header lists the locked
+    joints, their values and why (--lock, --massless lock, following a master).
+  * Armature: --armature JOINT=VALUE (repeatable; VALUE >= 0) gives a revolute, continuous or
+    prismatic joint (not a mimic, not a locked joint) the rotor inertia VALUE:
+    m.template link<i>().armature = T(VALUE) (ctga::chains::link_parameters::armature: added to
+    the joint's diagonal entry of the mass matrix). The header lists the armatures. An option that
+    names no joint, or names one twice, is an error naming it.
   * Inertia policy. Errors: malformed or non-finite numbers, negative mass, malformed XML.
     Warnings on stderr (physically questionable but common data), per URDF link whose inertia
     enters a body and per merged body (for the lumped tensor): principal moments that are not all
     positive (the tensor is not positive definite), principal moments that violate the triangle
-    inequality I_i <= I_j + I_k, a mass-0 link with a nonzero tensor (inertia lumped into the world
-    is dropped, so not checked). The header repeats the warnings as comments. Tolerance: with
+    inequality I_i <= I_j + I_k, a mass-0 link with a nonzero tensor (kept; inertia lumped into the
+    world is dropped, so not checked). The header repeats the warnings as comments. Tolerance: with
     tol = 64 eps (|Ixx| + |Iyy| + |Izz|) (eps = 2^-52, the tolerance of ctga's own check), a moment
     >= -tol and a triangle excess <= tol are rounding, not warned (e.g. -4e-22 for a thin rod's
     zero moment). Every body's mass properties are built with mass_check::as_given (the tool
@@ -85,10 +115,22 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     error and builds the bodies that have mass with the physical check (no as_given), so it also
     refuses a body whose lumped tensor is singular (a zero or rounding-level moment) as ctga's
     physical check would; massless bodies still use as_given (the physical check needs m > 0).
-Joint limits, dynamics (damping, friction), visuals, collisions, transmissions and Gazebo
-extensions are ignored. Anything that cannot be represented (a joint type outside the URDF spec, a
-graph that is not a tree, a massless moving subtree) is an error: exit status 1 and a message
-naming the element on stderr; no header is written.
+  * Limits. make_limits<T>() returns ctga::chains::joint_limits<tree, T> (chains/joint_limits.hpp),
+    checked by check_limits: from unlimited<tree, T>(), each coordinate of a revolute, continuous
+    or prismatic joint takes its <limit lower upper velocity effort> and <dynamics damping
+    friction> numbers as written, a comment naming its joint. A missing attribute (or element) is no
+    bound (+-infinity; the URDF spec's default 0 for lower and upper would pin the joint) or 0
+    damping, friction; a continuous joint has no position bounds (its lower and upper are not
+    read). Floating joints, the floating base and planar joints are unlimited (URDF defines no
+    limits for them); mimic and locked joints have no coordinate: a comment says their limits are
+    dropped. Errors naming the joint (only for revolute, continuous and prismatic joints, whose
+    limits are read): lower > upper (revolute, prismatic), a negative velocity, effort, damping or
+    friction, a malformed number, two <limit> or <dynamics>. (Refusing lower > upper, rather than
+    dropping the bounds with a warning: the numbers are wrong, and check_limits would refuse them.)
+<safety_controller>, <calibration>, visuals, collisions, transmissions and Gazebo extensions are
+ignored. Anything that cannot be represented (a joint type outside the URDF spec, a graph that is
+not a tree, a massless moving subtree under --massless refuse) is an error: exit status 1 and a
+message naming the element on stderr; no header is written.
 
 Standard library only.
 """
@@ -327,21 +369,23 @@ def physically_refused(tensor):
 
 def lump(parts):
     """Mass properties of rigidly joined parts [(m, c, I about c)], all in one frame: (m, c, I about
-    c). Massless parts add nothing; a single part is returned unchanged (no rounding)."""
-    parts = [p for p in parts if p[0] > 0]
+    c). A part of mass 0 adds its tensor as it stands (no parallel-axis term: as Pinocchio does);
+    a single part is returned unchanged (no rounding); the centre of mass of no mass is 0."""
     if not parts:
         return 0.0, [0.0, 0.0, 0.0], [[0.0] * 3 for _ in range(3)]
-    if len(parts) == 1:
+    if len(parts) == 1 and parts[0][0] > 0:
         return parts[0]
     m = sum(p[0] for p in parts)
-    c = [sum(p[0] * p[1][i] for p in parts) / m for i in range(3)]
+    c = [sum(p[0] * p[1][i] for p in parts) / m for i in range(3)] if m > 0 else [0.0, 0.0, 0.0]
     I = [[0.0] * 3 for _ in range(3)]
     for mk, ck, Ik in parts:
         d = [ck[i] - c[i] for i in range(3)]
-        d2 = dot(d, d)
         for a in range(3):
-            for b in range(a, 3):
-                I[a][b] += Ik[a][b] + mk * ((d2 if a == b else 0.0) - d[a] * d[b])
+            # the diagonal's |d|^2 - d_a^2 as the other two squares: no cancellation when d lies
+            # far along axis a (as mass_properties.hpp's inertia_about_origin)
+            I[a][a] += Ik[a][a] + mk * (d[(a + 1) % 3] ** 2 + d[(a + 2) % 3] ** 2)
+            for b in range(a + 1, 3):
+                I[a][b] += Ik[a][b] - mk * d[a] * d[b]
     return m, c, [[I[min(a, b)][max(a, b)] for b in range(3)] for a in range(3)]
 
 
@@ -367,7 +411,7 @@ class Mimic:
 
 
 class Joint:
-    def __init__(self, name, kind, parent, child, xyz, rpy, axis, mimic):
+    def __init__(self, name, kind, parent, child, xyz, rpy, axis, mimic, limit=None, dynamics=None):
         self.name = name
         self.kind = kind      # one of SUPPORTED_TYPES
         self.parent = parent  # link names
@@ -376,6 +420,29 @@ class Joint:
         self.rpy = rpy
         self.axis = axis      # unit, joint frame (revolute, continuous, prismatic; planar: the normal), else None
         self.mimic = mimic    # Mimic or None
+        self.limit = limit        # {lower, upper, velocity, effort: those given} (1-dof joints); None: no <limit>
+        self.dynamics = dynamics  # {damping, friction: those given} (1-dof joints); None: no <dynamics>
+
+    def bounds(self):
+        """(lower, upper) position bounds, None where absent (a continuous joint has none)."""
+        if self.kind == "continuous" or self.limit is None:
+            return None, None
+        return self.limit.get("lower"), self.limit.get("upper")
+
+    def rest(self):
+        """Its position 0, clamped into its <limit> (where a lock puts it by default)."""
+        lo, up = self.bounds()
+        return lo if lo is not None and lo > 0.0 else up if up is not None and up < 0.0 else 0.0
+
+    def motion(self, value):
+        """The joint's motion at coordinate `value` (a revolute or continuous joint turns about its
+        axis, a prismatic joint slides along it; others: their origin, value 0), as a Pose."""
+        if value == 0.0 or self.kind not in ONE_DOF:
+            return Pose()
+        if self.kind == "prismatic":
+            return Pose(IDENTITY_Q, [value * c for c in self.axis])
+        s = math.sin(value / 2)
+        return Pose((math.cos(value / 2), s * self.axis[0], s * self.axis[1], s * self.axis[2]))
 
 
 def _origin(elem, where):
@@ -412,6 +479,36 @@ def _parse_inertial(link_elem, where):
     if rpy != [0.0, 0.0, 0.0]:
         tensor = rotate_tensor(rpy_matrix(rpy), tensor)
     return Inertial(mass, xyz, tensor)
+
+
+LIMIT_KEYS = ("lower", "upper", "velocity", "effort")
+DYNAMICS_KEYS = ("damping", "friction")
+
+
+def _parse_numbers(je, tag, keys, where):
+    """The numbers of the attributes `keys` that <tag> gives (others, e.g. Gazebo's, are ignored),
+    or None without <tag>."""
+    elems = je.findall(tag)
+    if not elems:
+        return None
+    if len(elems) > 1:
+        raise UrdfError(f"{where}: more than one <{tag}>")
+    return {k: parse_number(elems[0].get(k), f"{where}: <{tag} {k}>") for k in keys if elems[0].get(k) is not None}
+
+
+def _limits_and_dynamics(je, kind, where):
+    """A 1-dof joint's <limit> and <dynamics>, checked: lower <= upper (revolute, prismatic; a
+    continuous joint's bounds are not read), velocity, effort, damping and friction >= 0."""
+    limit = _parse_numbers(je, "limit", LIMIT_KEYS, where)
+    dynamics = _parse_numbers(je, "dynamics", DYNAMICS_KEYS, where)
+    if limit is not None and kind != "continuous" and "lower" in limit and "upper" in limit \
+            and limit["lower"] > limit["upper"]:
+        raise UrdfError(f'{where}: <limit lower="{limit["lower"]!r}" upper="{limit["upper"]!r}">: lower > upper')
+    for tag, given in (("limit", limit), ("dynamics", dynamics)):
+        for k, x in (given or {}).items():
+            if k not in ("lower", "upper") and x < 0:
+                raise UrdfError(f"{where}: <{tag} {k}> {x!r} is negative")
+    return limit, dynamics
 
 
 def _unit_axis(je, where):
@@ -485,7 +582,8 @@ def parse_urdf(path):
             off = me[0].get("offset")
             mimic = Mimic(master, 1.0 if mult is None else parse_number(mult, f"{where}: <mimic multiplier>"),
                           0.0 if off is None else parse_number(off, f"{where}: <mimic offset>"))
-        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis, mimic))
+        limit, dynamics = _limits_and_dynamics(je, kind, where) if kind in ONE_DOF else (None, None)
+        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis, mimic, limit, dynamics))
     return root.get("name", ""), links, joints
 
 
@@ -543,12 +641,36 @@ class Body:
         self.parts = []                 # [(Link, Pose in this body's frame)]: its own link first, then merged ones
         self.mass, self.com, self.tensor = 0.0, [0.0] * 3, [[0.0] * 3 for _ in range(3)]
         self.dofs = 0
+        self.turns = False              # its joint turns it (revolute, continuous, a planar joint's rotation)
+        self.armature = None            # a 1-dof joint's rotor inertia (--armature, --massless armature=)
 
 
 class Frame:
     def __init__(self, name, body, pose, via):
         self.name, self.body, self.pose = name, body, pose
-        self.via = via  # the fixed joints composed into the pose (names), outermost first
+        self.via = via  # the fixed (or locked) joints composed into the pose (names), outermost first
+
+
+class Lock:
+    """A moving joint made fixed at `value` (a planar or floating joint: at its origin, 0)."""
+
+    def __init__(self, value, why, given=False):
+        self.value = value  # None until settled (the default: 0 clamped into <limit>; a mimic: m v + o)
+        self.why = why      # "--lock", "--massless lock", 'follows "master"'
+        self.given = given  # the value was given on the command line
+
+
+class Options:
+    """The loading options (the command line's), defaults as there."""
+
+    def __init__(self, floating_base=False, keep_fixed=False, mimic="coupled", mimic_missing="refuse", strict=False,
+                 massless="refuse", locks=(), armatures=()):
+        self.floating_base, self.keep_fixed, self.strict = floating_base, keep_fixed, strict
+        self.mimic = mimic                  # coupled | independent
+        self.mimic_missing = mimic_missing  # refuse | independent
+        self.massless = massless            # "refuse" | "lock" | the armature (float) of --massless armature=VALUE
+        self.locks = list(locks)            # [(joint, value or None)] as given
+        self.armatures = list(armatures)    # [(joint, value)] as given
 
 
 class Model:
@@ -558,10 +680,18 @@ class Model:
         self.frames = []
         self.world_links = []  # links lumped into the world (their inertia dropped), root first
         self.warnings = []
+        self.locks = {}        # joint name -> Lock, in the order decided
+        self.armatures = {}    # joint name -> (value, why)
+        self.mimics = {}       # joint name -> Mimic: the <mimic> joints coupled to their master
 
 
-def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupled", strict=False):
-    """The Model: bodies and frames in depth-first order, mass properties, warnings."""
+NO_MASS = "no mass in its subtree"
+SINGULAR = "the mass matrix would be singular and ABA would divide by zero"
+
+
+def build_tree(links, joints, opts):
+    """The Model: bodies and frames in depth-first order, mass properties, locks and armatures,
+    warnings."""
     if not links:
         raise UrdfError("the URDF has no <link>")
     by_name = {l.name: l for l in links}
@@ -583,6 +713,142 @@ def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupl
     for j in joints:
         children[j.parent].append(j)
 
+    warnings = []
+    mimics = _resolve_mimics(joints, joint_by_name, opts, warnings)
+    locks = _explicit_locks(joint_by_name, opts)
+    _settle_locks(locks, joint_by_name, mimics)
+    armatures = _explicit_armatures(joint_by_name, mimics, locks, opts)
+    while True:
+        model = _assemble(links, by_name, joint_by_name, root, children, opts, locks)
+        model.warnings = list(warnings)
+        _couple_mimics(model, mimics)
+        _mass_properties(model, opts.strict)
+        for b in model.bodies:
+            if b.link is not None and b.urdf_joint is not None and b.urdf_joint.name in armatures:
+                b.armature = armatures[b.urdf_joint.name][0]
+        failing = massless_joints(model)
+        if not failing:
+            break
+        _massless_option(failing, opts, locks, armatures, mimics)
+        _settle_locks(locks, joint_by_name, mimics)
+    # what the locks leave questionable
+    for name, lk in locks.items():
+        j = joint_by_name[name]
+        mimic = mimics.get(name)
+        if mimic is not None and mimic.master not in locks:
+            model.warnings.append(f'joint "{name}" (a <mimic> of "{mimic.master}") is locked at {lk.value!r}: it no '
+                                  f'longer follows "{mimic.master}"')
+        lo, up = j.bounds()
+        if lk.given and mimic is None and ((lo is not None and lk.value < lo) or (up is not None and lk.value > up)):
+            model.warnings.append(f'joint "{name}" is locked at {lk.value!r}, outside its <limit> [{lo!r}, {up!r}]')
+    model.locks = locks
+    model.armatures = {n: a for n, a in armatures.items() if n not in locks}
+    model.mimics = mimics
+    return model
+
+
+def _resolve_mimics(joints, joint_by_name, opts, warnings):
+    """{joint name: Mimic} of the <mimic> joints coupled to their master (--mimic coupled): checked,
+    a <mimic> on a fixed joint dropped with a warning, one naming a missing joint refused or (with
+    --mimic-missing independent) dropped with a warning."""
+    if opts.mimic != "coupled":
+        return {}
+    out = {}
+    for j in joints:
+        if j.mimic is None:
+            continue
+        where = f'joint "{j.name}"'
+        if j.kind == "fixed":  # it does not move: nothing to couple (TALOS's gripper links)
+            warnings.append(f"{where}: <mimic> on a fixed joint is ignored (the joint does not move)")
+            continue
+        if j.kind not in ONE_DOF:
+            raise UrdfError(f'{where}: <mimic> on a {j.kind} joint (only revolute, continuous and prismatic joints '
+                            "can mimic another; --mimic independent ignores <mimic>)")
+        if j.mimic.master not in joint_by_name:
+            if opts.mimic_missing == "independent":
+                warnings.append(f'{where}: <mimic joint="{j.mimic.master}">: no such joint; {where} is an independent '
+                                "joint (--mimic-missing independent)")
+                continue
+            raise UrdfError(f'{where}: <mimic joint="{j.mimic.master}">: no such joint (--mimic-missing independent '
+                            "makes such a joint an ordinary independent joint; --mimic independent does so for every "
+                            "<mimic> joint)")
+        out[j.name] = j.mimic
+    for name, mimic in out.items():
+        where = f'joint "{name}"'
+        master = joint_by_name[mimic.master]
+        if master.kind not in ONE_DOF:
+            raise UrdfError(f'{where}: <mimic joint="{master.name}">: the master is a {master.kind} joint (it must '
+                            "be revolute, continuous or prismatic)")
+        if master.name in out:
+            raise UrdfError(f'{where}: <mimic joint="{master.name}">: the master itself mimics '
+                            f'"{master.mimic.master}" (a mimic must follow an independent joint)')
+    return out
+
+
+def _option_joint(option, name, joint_by_name, table):
+    """The joint an option names (an error naming the option and the name if there is none, or if
+    the option already named it)."""
+    j = joint_by_name.get(name)
+    if j is None:
+        raise UrdfError(f'{option}: no joint named "{name}"')
+    if name in table:
+        raise UrdfError(f'{option}: joint "{name}" is named twice')
+    return j
+
+
+def _explicit_locks(joint_by_name, opts):
+    locks = {}
+    for name, value in opts.locks:
+        option = f"--lock {name}" + ("" if value is None else f"={value!r}")
+        j = _option_joint(option, name, joint_by_name, locks)
+        if j.kind == "fixed":
+            raise UrdfError(f'{option}: joint "{name}" is fixed already')
+        if value is not None and j.kind not in ONE_DOF:
+            raise UrdfError(f'{option}: joint "{name}" is {j.kind}: it locks at its origin, without a value '
+                            f"(--lock {name})")
+        locks[name] = Lock(value, "--lock", value is not None)
+    return locks
+
+
+def _settle_locks(locks, joint_by_name, mimics):
+    """Gives each lock without a value its value, and locks the mimics of locked masters: a 1-dof
+    joint at 0 clamped into its <limit>; a mimic at m v + o, v its master's locked value (0 if its
+    master is free); a planar or floating joint at its origin (0)."""
+    for name, lk in locks.items():
+        if lk.value is None and name not in mimics:
+            lk.value = joint_by_name[name].rest()
+    for name, mimic in mimics.items():
+        master = locks.get(mimic.master)
+        follows = mimic.multiplier * (master.value if master is not None else 0.0) + mimic.offset
+        if name in locks:
+            if locks[name].value is None:
+                locks[name].value = follows
+        elif master is not None:
+            locks[name] = Lock(follows, f'follows "{mimic.master}"')
+
+
+def _explicit_armatures(joint_by_name, mimics, locks, opts):
+    out = {}
+    for name, value in opts.armatures:
+        option = f"--armature {name}={value!r}"
+        j = _option_joint(option, name, joint_by_name, out)
+        if j.kind not in ONE_DOF:
+            raise UrdfError(f'{option}: joint "{name}" is {j.kind}: armature is for revolute, continuous and prismatic '
+                            "joints")
+        if name in mimics:
+            raise UrdfError(f'{option}: joint "{name}" mimics "{mimics[name].master}": it has no coordinate of its own '
+                            f'(give the armature to "{mimics[name].master}", or use --mimic independent)')
+        if name in locks:
+            raise UrdfError(f'{option}: joint "{name}" is locked ({locks[name].why}): a locked joint has no armature')
+        if value < 0:
+            raise UrdfError(f"{option}: the armature is negative")
+        out[name] = (value, "--armature")
+    return out
+
+
+def _assemble(links, by_name, joint_by_name, root, children, opts, locks):
+    """The bodies and frames, depth first: a locked joint is a fixed one whose origin is followed
+    by the joint's motion at its value."""
     model = Model()
     model.root = root
     bodies, frames = model.bodies, model.frames
@@ -611,7 +877,7 @@ def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupl
             model.world_links.append(link)
         stack.extend((j, body, pose, via) for j in reversed(children[link.name]))
 
-    if floating_base:
+    if opts.floating_base:
         name = root.name
         while name in joint_by_name or (name != root.name and name in taken):
             name += "_joint"
@@ -625,11 +891,16 @@ def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupl
     while stack:
         j, parent, ppose, pvia = stack.pop()
         link = by_name[j.child]
-        placement = ppose.then(Pose.origin(j.xyz, j.rpy))
-        if j.kind == "fixed" and not keep_fixed:
+        lock = locks.get(j.name)
+        origin = Pose.origin(j.xyz, j.rpy)
+        placement = ppose.then(origin if lock is None else origin.then(j.motion(lock.value)))
+        if (j.kind == "fixed" or lock is not None) and not opts.keep_fixed:
             visit(link, parent, placement, pvia + [j.name])
             continue
-        if j.kind == "planar":
+        if lock is not None:  # --keep-fixed
+            b = new_body(parent, link.name, j.name, j, f"{j.kind}, locked at {lock.value!r}", placement,
+                         "ctga::chains::fixed", link=link)
+        elif j.kind == "planar":
             u1, u2 = plane_axes(j.axis)
             cpp, takes = one_dof_type("prismatic", u1)
             bx = new_body(parent, None, None, j, "planar, translation along u1", placement, cpp, axis=u1,
@@ -643,12 +914,12 @@ def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupl
             cpp, takes = one_dof_type("revolute", j.axis)
             b = new_body(by.index, link.name, j.name, j, "planar, rotation about the normal", Pose(), cpp,
                          axis=j.axis, takes_axis=takes, link=link)
-            b.dofs = 1
+            b.dofs, b.turns = 1, True
         elif j.kind in ONE_DOF:
             cpp, takes = one_dof_type("prismatic" if j.kind == "prismatic" else "revolute", j.axis)
             b = new_body(parent, link.name, j.name, j, j.kind, placement, cpp, axis=j.axis, takes_axis=takes,
                          link=link)
-            b.dofs = 1
+            b.dofs, b.turns = 1, j.kind != "prismatic"
         elif j.kind == "floating":
             b = new_body(parent, link.name, j.name, j, "floating", placement, "ctga::chains::floating", link=link)
             b.dofs = 6
@@ -664,41 +935,17 @@ def build_tree(links, joints, floating_base, keep_fixed=False, mimic_mode="coupl
     if not bodies:
         raise UrdfError(f'the robot has no bodies: the root link "{root.name}" is the world and no joint moves '
                         "anything (use --floating-base to make it a free body)")
-
-    _couple_mimics(model, joints, joint_by_name, mimic_mode)
-    _mass_properties(model, strict)
     return model
 
 
-def _couple_mimics(model, joints, joint_by_name, mimic_mode):
-    if mimic_mode != "coupled":
-        return
+def _couple_mimics(model, mimics):
     bodies = model.bodies
     body_of_joint = {b.urdf_joint.name: b for b in bodies if b.urdf_joint is not None and b.link is not None}
-    for j in joints:
-        if j.mimic is None:
-            continue
-        where = f'joint "{j.name}"'
-        if j.kind == "fixed":  # it does not move: nothing to couple (TALOS's gripper links)
-            model.warnings.append(f"{where}: <mimic> on a fixed joint is ignored (the joint does not move)")
-            continue
-        if j.kind not in ONE_DOF:
-            raise UrdfError(f'{where}: <mimic> on a {j.kind} joint (only revolute, continuous and prismatic joints '
-                            "can mimic another; --mimic independent ignores <mimic>)")
-        master = joint_by_name.get(j.mimic.master)
-        if master is None:
-            raise UrdfError(f'{where}: <mimic joint="{j.mimic.master}">: no such joint')
-        if master.kind not in ONE_DOF:
-            raise UrdfError(f'{where}: <mimic joint="{master.name}">: the master is a {master.kind} joint (it must '
-                            "be revolute, continuous or prismatic)")
-        if master.mimic is not None:
-            raise UrdfError(f'{where}: <mimic joint="{master.name}">: the master itself mimics '
-                            f'"{master.mimic.master}" (a mimic must follow an independent joint)')
     for b in bodies:
         j = b.urdf_joint
-        if j is None or j.mimic is None or b.link is None:
+        if j is None or j.name not in mimics or b.link is None or b.dofs == 0:
             continue
-        master = body_of_joint[j.mimic.master]
+        master = body_of_joint[mimics[j.name].master]
         b.cpp_joint = f"ctga::chains::mimic<{b.cpp_joint}, {master.index}>"
         b.coupling = (j.mimic.multiplier, j.mimic.offset)
         b.dofs = 0
@@ -718,10 +965,9 @@ def _mass_properties(model, strict):
             if link.inertial is None:
                 continue
             t = link.inertial.tensor
-            if link.inertial.mass == 0:
-                if any(x != 0.0 for row in t for x in row):
-                    complain(f'link "{link.name}": mass 0 with a nonzero inertia tensor (taken as massless)')
-                continue
+            if link.inertial.mass == 0 and any(x != 0.0 for row in t for x in row):
+                complain(f'link "{link.name}": mass 0 with a nonzero inertia tensor (kept, as Pinocchio does: it adds '
+                         "to its body's rotational inertia, without a parallel-axis term)")
             why = questionable(t)
             if why:
                 complain(f'link "{link.name}": {why}')
@@ -729,9 +975,9 @@ def _mass_properties(model, strict):
     for b in bodies:
         parts = []
         for link, pose in b.parts:
-            if link.inertial is None or link.inertial.mass == 0:
-                continue
             i = link.inertial
+            if i is None or (i.mass == 0 and not any(x != 0.0 for row in i.tensor for x in row)):
+                continue
             if pose.is_identity():
                 parts.append((i.mass, list(i.com), i.tensor))
             else:
@@ -749,16 +995,60 @@ def _mass_properties(model, strict):
             why = physically_refused(b.tensor)
             if why:
                 raise UrdfError(f"{what}: {why}, which ctga's physical check refuses (--strict)")
-    # a moving joint with no mass anywhere below it
-    subtree = [b.mass for b in bodies]
+
+
+def massless_joints(model):
+    """The bodies whose joint moves but meets no inertia, as ctga::chains::massless_subtree finds
+    them: no mass in the body or below it, no armature, and for a joint that turns no rotational
+    inertia there either (the trace of the massless tensors)."""
+    bodies = model.bodies
+    mass = [b.mass for b in bodies]
+    turning = [b.tensor[0][0] + b.tensor[1][1] + b.tensor[2][2] for b in bodies]
     for b in reversed(bodies):
         if b.parent >= 0:
-            subtree[b.parent] += subtree[b.index]
-    for b in bodies:
-        if b.cpp_joint not in ("ctga::chains::fixed", "ctga::chains::aligned<ctga::chains::fixed>") and not subtree[b.index] > 0:
-            name = b.urdf_joint.name if b.urdf_joint is not None else b.joint_name
-            raise UrdfError(f'joint "{name}": no mass in its subtree: the mass matrix would be singular and ABA '
-                            "would divide by zero")
+            mass[b.parent] += mass[b.index]
+            turning[b.parent] += turning[b.index]
+    return [b for b in bodies if (b.dofs > 0 or b.coupling is not None) and not mass[b.index] > 0
+            and not (b.armature or 0.0) > 0 and not (b.turns and turning[b.index] > 0)]
+
+
+def _massless_option(failing, opts, locks, armatures, mimics):
+    """What --massless does with the joints that meet no inertia: refuse (an error naming the
+    first and the options), lock them, or give them an armature."""
+    joints = []
+    for b in failing:
+        if b.urdf_joint is None:  # the floating base: nothing below it has mass
+            raise UrdfError(f'joint "{b.joint_name}": {NO_MASS}: {SINGULAR} (the floating base: the robot has no '
+                            "mass at all)")
+        if b.urdf_joint not in joints:
+            joints.append(b.urdf_joint)
+    first = joints[0]
+    if opts.massless == "refuse":
+        others = [f'"{j.name}"' for j in joints[1:]]
+        also = ""
+        if others:
+            also = "; the same for " + ", ".join(others[:4])
+            also += f" and {len(others) - 4} more" if len(others) > 4 else ""
+        raise UrdfError(f'joint "{first.name}": {NO_MASS}: {SINGULAR} (no armature either, nor, for a revolute '
+                        f"joint, a rotational inertia){also}. Options: "
+                        "--massless lock (fix such joints at 0), --massless armature=VALUE (give them a rotor inertia), "
+                        f"or per joint --lock {first.name}[=VALUE], --armature {first.name}=VALUE")
+    for j in joints:
+        if opts.massless == "lock":
+            locks[j.name] = Lock(None, "--massless lock")
+        elif j.name in mimics:
+            raise UrdfError(f'joint "{j.name}": {NO_MASS}, and --massless armature cannot help: a <mimic> joint has no '
+                            f"coordinate, so no armature of its own (use --massless lock, --lock {j.name}, or --mimic "
+                            "independent)")
+        elif j.kind not in ONE_DOF:
+            raise UrdfError(f'joint "{j.name}": {NO_MASS}, and --massless armature cannot help: armature is for '
+                            f"revolute, continuous and prismatic joints, this one is {j.kind} (use --massless lock or "
+                            f"--lock {j.name})")
+        elif j.name in armatures:  # given as 0
+            raise UrdfError(f'joint "{j.name}": {NO_MASS}: {SINGULAR}, and its armature is {armatures[j.name][0]!r} '
+                            "(--armature)")
+        else:
+            armatures[j.name] = (opts.massless, "--massless armature")
 
 
 # ---- C++ ----------------------------------------------------------------------------------------
@@ -823,23 +1113,32 @@ def motor_lines(pose, indent):
             f"{indent}                   ctga::make_rotor({num(theta)}, {vec(u)}))"]
 
 
-def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravity, keep_fixed=False,
-             mimic_mode="coupled", strict=False):
+def option_words(name, namespace, gravity, opts):
+    """The command line's options as the header repeats them."""
+    w = f"--name {name}" + (f" --namespace {namespace}" if namespace != name else "")
+    w += " --floating-base" if opts.floating_base else ""
+    w += "" if gravity == [0.0, 0.0, -9.81] else " --gravity " + " ".join(repr(g) for g in gravity)
+    w += " --keep-fixed" if opts.keep_fixed else ""
+    w += " --mimic independent" if opts.mimic != "coupled" else ""
+    w += " --mimic-missing independent" if opts.mimic_missing != "refuse" else ""
+    w += "" if opts.massless == "refuse" else " --massless " + ("lock" if opts.massless == "lock" else
+                                                               f"armature={opts.massless!r}")
+    w += "".join(f" --lock {n}" + ("" if v is None else f"={v!r}") for n, v in opts.locks)
+    w += "".join(f" --armature {n}={v!r}" for n, v in opts.armatures)
+    w += " --strict" if opts.strict else ""
+    return comment_text(w)
+
+
+def generate(urdf_path, robot_name, model, name, namespace, gravity, opts):
     root, bodies, frames = model.root, model.bodies, model.frames
     source = os.path.basename(urdf_path)
     dofs = sum(b.dofs for b in bodies)
     L = []
     L.append(f"// Generated by tools/urdf_to_ctga.py from {cpp_string(source)[1:-1]}; do not edit.")
-    opts = f"--name {name}" + (f" --namespace {namespace}" if namespace != name else "")
-    opts += " --floating-base" if floating_base else ""
-    opts += "" if gravity == [0.0, 0.0, -9.81] else " --gravity " + " ".join(repr(g) for g in gravity)
-    opts += " --keep-fixed" if keep_fixed else ""
-    opts += " --mimic independent" if mimic_mode != "coupled" else ""
-    opts += " --strict" if strict else ""
     L.append(f"// Robot {cpp_string(robot_name)}: {len(bodies)} bodies, {len(frames)} frames, {dofs} degrees of "
-             f"freedom; options: {opts}")
+             f"freedom; options: {option_words(name, namespace, gravity, opts)}")
     L.append("//")
-    if floating_base:
+    if opts.floating_base:
         L.append(f"// The root link {cpp_string(root.name)} is body 0 on a floating joint named "
                  f"{cpp_string(bodies[0].joint_name)} (identity")
         L.append("// placement; q: the 8 coefficients of its motor in the world, ctga::motor's order).")
@@ -853,24 +1152,36 @@ def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravi
         if massless:
             L.append("// Links in the world without <inertial>: " +
                      ", ".join(cpp_string(l.name) for l in massless) + ".")
-    if keep_fixed:
-        L.append("// --keep-fixed: every link on a fixed joint is its own body on a fixed joint.")
+    if opts.keep_fixed:
+        L.append("// --keep-fixed: every link on a fixed (or locked) joint is its own body on a fixed joint.")
     else:
-        L.append("// Links on fixed joints are merged into their nearest moving ancestor's body (mass, centre of")
-        L.append("// mass and inertia summed exactly in the body frame); every link is a frame (fixed_frame).")
-    mimics = [b for b in bodies if b.urdf_joint is not None and b.urdf_joint.mimic is not None]
-    if mimics and mimic_mode != "coupled":
-        L.append("// --mimic independent: the <mimic> joints " + ", ".join(cpp_string(b.joint_name) for b in mimics)
+        L.append("// Links on fixed (and locked) joints are merged into their nearest moving ancestor's body (mass,")
+        L.append("// centre of mass and inertia summed exactly in the body frame); every link is a frame (fixed_frame).")
+    independent = [b for b in bodies if b.urdf_joint is not None and b.urdf_joint.mimic is not None
+                   and b.link is not None and b.urdf_joint.name not in model.mimics and b.dofs > 0]
+    if independent and opts.mimic != "coupled":
+        L.append("// --mimic independent: the <mimic> joints " + ", ".join(cpp_string(b.joint_name) for b in independent)
                  + " are independent coordinates.")
+    elif independent:
+        L.append("// --mimic-missing independent: the <mimic> joints " +
+                 ", ".join(cpp_string(b.joint_name) for b in independent) +
+                 " name no joint: they are independent coordinates.")
+    if model.locks:
+        L.append("// Locked joints (fixed at the value: revolute rad, prismatic m; planar, floating: the origin): " +
+                 ", ".join(f"{cpp_string(n)} at {lk.value!r} ({comment_text(lk.why)})" for n, lk in model.locks.items())
+                 + ".")
+    if model.armatures:
+        L.append("// Armatures (a joint's rotor inertia: revolute kg m^2, prismatic kg): " +
+                 ", ".join(f"{cpp_string(n)} {v!r} ({why})" for n, (v, why) in model.armatures.items()) + ".")
     L.append("// Body frame = the URDF child link's frame; placement = the joint's <origin> (at q = 0).")
-    if strict:
+    if opts.strict:
         L.append("// --strict: bodies with mass use ctga's physical check (no questionable inertia was found).")
     else:
         L.append("// Mass properties are built with ctga::mass_check::as_given (finite, m >= 0, checked here).")
     for w in model.warnings:
         L.append(f"// Warning: {comment_text(w)}")
-    L.append("// Ignored: joint limits (<limit>, <safety_controller>), <dynamics> (damping, friction),")
-    L.append("// <calibration>, visuals, collisions, transmissions. Floating joints read 8 motor coefficients.")
+    L.append("// Joint limits and <dynamics>: make_limits<T>() (below). Ignored: <safety_controller>, <calibration>,")
+    L.append("// visuals, collisions, transmissions. Floating joints read 8 motor coefficients.")
     L.append("#pragma once")
     L.append("")
     L.append("#include <array>")
@@ -916,6 +1227,8 @@ def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravi
             pf = next((f for f in frames if f.name == j.parent), None)
             if pf is not None and pf.via:
                 origin += f", after link {cpp_string(j.parent)}'s fixed placement in body {pf.body}"
+            if j.name in model.locks:
+                origin += f", then the joint's motion at its locked value {model.locks[j.name].value!r}"
             L.append(f"        // placement: {origin}")
         merged = [l.name for l, _ in b.parts[1:]]
         if merged:
@@ -925,7 +1238,7 @@ def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravi
         motor = motor_lines(b.placement, "            ")
         motor[-1] += ","
         L.extend(motor)
-        check = "" if strict and b.mass > 0 else ", ctga::mass_check::as_given"
+        check = "" if opts.strict and b.mass > 0 else ", ctga::mass_check::as_given"
         L.append(f"            ctga::make_mass_properties({num(b.mass)}, ctga::vec3<T>{{{vec(b.com)}}},")
         L.append(f"                                       ctga::mat3<T>{{{{{{{vec(b.tensor[0])}}},")
         L.append(f"                                                      {{{vec(b.tensor[1])}}},")
@@ -942,6 +1255,9 @@ def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravi
         L[-1] += ");"
         L.append("        if (!x) return {{}, x.error};")
         L.append(f"        m.template link<{b.index}>() = *x;")
+        if b.armature is not None:
+            L.append(f"        m.template link<{b.index}>().armature = {num(b.armature)};  "
+                     f"// {model.armatures[b.urdf_joint.name][1]}")
         L.append("    }")
     # the frames' placements as a table and one loop (one copy of the motor code, whatever the count)
     L.append("    // each frame's placement in its body: translation (x, y, z), then rotation angle and unit axis")
@@ -964,11 +1280,81 @@ def generate(urdf_path, robot_name, model, name, namespace, floating_base, gravi
     L.append("    return {m, ctga::error_code::none};")
     L.append("}")
     L.append("")
+    L.extend(limits_lines(model))
+    L.append("")
     L.append(f"}}  // namespace {namespace}")
     return "\n".join(L) + "\n"
 
 
+def limits_lines(model):
+    """make_limits<T>(): the URDF's <limit> and <dynamics> per velocity number (a missing bound or
+    limit is none, a missing damping or friction 0), checked by ctga::chains::check_limits."""
+    L = ["// The joints' <limit> (position bounds, velocity, effort) and <dynamics> (damping, friction) per",
+         "// velocity number (tree::v_offset[i] is body i's first); a missing attribute: no bound (+-infinity),",
+         "// damping and friction 0. Floating joints and planar joints are unlimited (URDF gives them no limits).",
+         "template <class T = double>",
+         "constexpr ctga::checked<ctga::chains::joint_limits<tree, T>> make_limits() noexcept {",
+         "    auto l = ctga::chains::unlimited<tree, T>();"]
+    k = 0
+    for b in model.bodies:
+        j = b.urdf_joint
+        what = f"joint {cpp_string(b.joint_name)} (body {b.index}"
+        if b.dofs == 0:
+            if b.coupling is not None:
+                L.append(f"    // {what}, a <mimic> of {cpp_string(j.mimic.master)}: no coordinate, its limits dropped)")
+            continue
+        span = f"v {k}" if b.dofs == 1 else f"v {k}..{k + b.dofs - 1}"
+        if j is None or j.kind not in ONE_DOF:
+            L.append(f"    // {span}: {what}, {b.kind}): unlimited")
+        else:
+            keys = LIMIT_KEYS[2:] if j.kind == "continuous" else LIMIT_KEYS  # continuous: no position bounds
+            notes = []
+            for tag, given, wanted in (("limit", j.limit, keys), ("dynamics", j.dynamics, DYNAMICS_KEYS)):
+                if given is None:
+                    notes.append(f"no <{tag}>")
+                elif [a for a in wanted if a not in given]:
+                    notes.append("no " + ", ".join(a for a in wanted if a not in given))
+            if j.kind == "continuous" and j.limit is not None and ("lower" in j.limit or "upper" in j.limit):
+                notes.append("continuous: its lower, upper ignored")
+            given = {a: x for a, x in (j.limit or {}).items() if a in keys}
+            given.update(j.dynamics or {})
+            L.append(f"    // {span}: {what}, {j.kind})" + (": " + "; ".join(notes) if notes else ""))
+            for a in LIMIT_KEYS + DYNAMICS_KEYS:
+                if a in given:
+                    L.append(f"    l.{a}[{k}] = {num(given[a])};")
+        k += b.dofs
+    for name, lk in model.locks.items():
+        L.append(f"    // joint {cpp_string(name)}: locked at {lk.value!r}, no coordinate, its limits dropped")
+    L.append("    return ctga::chains::check_limits(l);")
+    L.append("}")
+    return L
+
+
 # ---- command line -------------------------------------------------------------------------------
+
+
+def _joint_value(text, option, joint_names, need_value):
+    """JOINT[=VALUE] of --lock / --armature: (joint, value or None). A name that is a joint's whole
+    name is taken as it stands (joint names may hold '='); else the text splits at its last '='."""
+    if text in joint_names and not need_value:
+        return text, None
+    name, eq, value = text.rpartition("=")
+    if not eq:
+        if need_value:
+            raise UrdfError(f"{option} {text}: expected JOINT=VALUE")
+        return text, None
+    return name, parse_number(value, f"{option} {text}")
+
+
+def _massless_choice(text):
+    if text in ("refuse", "lock"):
+        return text
+    if text.startswith("armature="):
+        value = parse_number(text[len("armature="):], f"--massless {text}")
+        if not value > 0:
+            raise UrdfError(f"--massless {text}: the armature must be positive")
+        return value
+    raise UrdfError(f"--massless {text}: expected refuse, lock or armature=VALUE")
 
 
 def main(argv=None):
@@ -986,23 +1372,38 @@ def main(argv=None):
     ap.add_argument("--mimic", choices=("coupled", "independent"), default="coupled",
                     help="coupled (default): a <mimic> joint follows its master (ctga::chains::mimic); "
                          "independent: it is an ordinary joint with its own coordinate")
+    ap.add_argument("--mimic-missing", choices=("refuse", "independent"), default="refuse",
+                    help="a <mimic> naming a joint that does not exist: refuse (default: an error), or independent "
+                         "(that joint becomes an ordinary joint, with a warning)")
+    ap.add_argument("--massless", default="refuse", metavar="refuse|lock|armature=VALUE",
+                    help="a moving joint with no inertia below it (no mass, no armature, for a revolute joint no "
+                         "rotational inertia): refuse (default: an error naming it), lock (fixed at 0, clamped into "
+                         "its <limit>), or armature=VALUE (a rotor inertia, kg m^2 or kg, for each such 1-dof joint)")
+    ap.add_argument("--lock", action="append", default=[], metavar="JOINT[=VALUE]",
+                    help="make JOINT fixed at VALUE (rad or m; default 0 clamped into its <limit>; a planar or "
+                         "floating joint: at its origin); its links stay frames; repeatable")
+    ap.add_argument("--armature", action="append", default=[], metavar="JOINT=VALUE",
+                    help="give the 1-dof JOINT the rotor inertia VALUE (kg m^2 or kg); repeatable")
     ap.add_argument("--strict", action="store_true",
                     help="questionable inertia (not positive definite, triangle inequality) is an error, and "
                          "bodies with mass use ctga's physical check")
     ap.add_argument("-o", "--output", help="the header to write (default: standard output)")
     args = ap.parse_args(argv)
-    model = None
     try:
         check_namespace(args.name, "--name")
         namespace = args.namespace if args.namespace is not None else args.name
         check_namespace(namespace, "--namespace")
         gravity = [parse_number(g, "--gravity") for g in args.gravity]
+        massless = _massless_choice(args.massless)
         robot_name, links, joints = parse_urdf(args.urdf)
-        model = build_tree(links, joints, args.floating_base, args.keep_fixed, args.mimic, args.strict)
+        names = {j.name for j in joints}
+        opts = Options(args.floating_base, args.keep_fixed, args.mimic, args.mimic_missing, args.strict, massless,
+                       [_joint_value(t, "--lock", names, False) for t in args.lock],
+                       [_joint_value(t, "--armature", names, True) for t in args.armature])
+        model = build_tree(links, joints, opts)
         for w in model.warnings:
             print(f"{PROG}: warning: {w}", file=sys.stderr)
-        text = generate(args.urdf, robot_name, model, args.name, namespace, args.floating_base, gravity,
-                        args.keep_fixed, args.mimic, args.strict)
+        text = generate(args.urdf, robot_name, model, args.name, namespace, gravity, opts)
     except UrdfError as e:
         print(f"{PROG}: {e}", file=sys.stderr)
         return 1

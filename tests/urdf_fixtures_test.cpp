@@ -20,17 +20,24 @@
 //   * legged: the massless root link's body carries base_inertia's mass; the total mass is the
 //     sum of the URDF's masses;
 //   * massless_subtree (−1 for every generated model; a body index once a subtree's masses are
-//     zeroed), find_frame of every name and of a name the tree does not have, the names.
+//     zeroed), find_frame of every name and of a name the tree does not have, the names;
+//   * limited_gripper's loading options: --massless lock --lock elbow=0.7 (elbow, finger_left,
+//     thumb and the mimic finger_right locked) against --massless armature=0.01 (every joint
+//     free) held at the locked values: every frame's pose, RNEA's free rows; the free
+//     model's make_limits against the URDF's numbers, its armatures (and massless_subtree counting
+//     them), its mass-0 tensors in the bodies' inertia (the sensor merged into the hand, the rotor).
 // Tolerances: 1e-12 relative for two exact routes (support/urdf_compare.hpp's measures, worst
 // values printed per test case: ≤ 1e-14, the largest ABA(RNEA(q̈)) = q̈ of the mimic model);
 // masses 1e-12 absolute; tool0 against the published DH without the fixture's residues 1e-10.
-// Four units (support/parts.hpp): ur5e; legged; the mimic and the names; mobile_gripper (merged vs
-// kept, its joints) (as one unit 66 s and 2.4 GB with g++ -O2).
+// Five units (support/parts.hpp): ur5e; legged frames and limited_gripper; the mimic and the names;
+// mobile_gripper (merged vs kept, its joints); legged dynamics (as one unit 66 s and 2.4 GB with
+// g++ -O2, before limited_gripper).
 // PARTS: 5
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <random>
 #include <string_view>
@@ -42,6 +49,8 @@
 
 #include <ctga/chains/algorithms.hpp>
 
+#include "gripper_free.hpp"    // generated: tools/urdf_to_ctga.py tests/data/limited_gripper.urdf --name gripper_free --massless armature=0.01
+#include "gripper_locked.hpp"  // ... --name gripper_locked --massless lock --lock elbow=0.7
 #include "legged.hpp"               // generated: tools/urdf_to_ctga.py tests/data/legged.urdf --name legged --floating-base
 #include "legged_kept.hpp"          // ... --name legged_kept --floating-base --keep-fixed
 #include "mobile_gripper.hpp"       // ... tests/data/mobile_gripper.urdf --name mobile_gripper
@@ -588,5 +597,121 @@ TEST_CASE("urdf fixtures: every URDF link is a frame, found by name, an unknown 
     const std::array<sv, 9> gripper_joints{"base_planar_x",   "base_planar_y", "base_planar",       "turret_joint",      "shoulder_joint",
                                            "telescope_joint", "wrist_joint",   "finger_left_joint", "finger_right_joint"};
     CHECK(mobile_gripper::joint_names == gripper_joints);
+}
+#endif
+
+#if CTGA_TEST_PART_HOLDS(6)
+namespace {
+// Every named frame's world pose (poses only: one frame_pose per frame).
+template <class Tree>
+std::array<ctga::motor_map<double>, Tree::frame_count> frame_poses(const ch::model<Tree>& m, const ch::kinematics<Tree>& k) {
+    std::array<ctga::motor_map<double>, Tree::frame_count> out;
+    [&]<std::size_t... K>(std::index_sequence<K...>) {
+        ((out[K] = ch::frame_pose(m, k, ch::frame_at<K>)), ...);
+    }(std::make_index_sequence<Tree::frame_count>{});
+    return out;
+}
+
+// limited_gripper.urdf's bodies: gripper_free (--massless armature=0.01) has them all, gripper_locked
+// (--massless lock --lock elbow=0.7) the three free joints; the locked values.
+using free_tree = gripper_free::tree;
+using locked_tree = gripper_locked::tree;
+static_assert(free_tree::size == 7 && free_tree::nv == 6 && free_tree::nq == 6 && free_tree::has_mimic);
+static_assert(locked_tree::size == 3 && locked_tree::nv == 3 && !locked_tree::has_mimic);
+static_assert(free_tree::frame_count == 10 && locked_tree::frame_count == 10);
+static_assert(std::is_empty_v<decltype(ch::model<free_tree>{}.link<5>().armature)>);  // the mimic finger: none
+}  // namespace
+
+TEST_CASE("urdf fixtures: limited_gripper --massless lock --lock elbow=0.7 is the free gripper held at the locked values (frames, RNEA)") {
+    const auto f = built(gripper_free::make_model<double>());
+    const auto l = built(gripper_locked::make_model<double>());
+    CHECK(gripper_locked::joint_names == std::array<sv, 3>{"shoulder", "wrist", "spinner"});
+    CHECK(locked_tree::frame_names == free_tree::frame_names);
+    // the free model's velocity number of each locked model's coordinate, by joint name
+    std::array<std::size_t, locked_tree::nv> in_free{};
+    for (std::size_t i = 0; i < locked_tree::size; ++i) {
+        std::size_t b = 0;
+        while (gripper_free::joint_names[b] != gripper_locked::joint_names[i]) ++b;
+        in_free[locked_tree::v_offset[i]] = free_tree::v_offset[b];
+    }
+    // the locked joints' values in the free model (finger_right, the mimic, follows: −1 · 0 + 0.01)
+    const std::array<std::pair<sv, double>, 3> locked{{{"elbow", 0.7}, {"finger_left", 0.0}, {"thumb", 0.2}}};
+    std::mt19937_64 rng(901);
+    for (int n = 0; n < 8; ++n) {
+        INFO("draw " << n);
+        const ch::configuration<locked_tree> q = ctga::test::urdf::random_configuration<locked_tree>(rng);
+        const ch::joint_vector<locked_tree> qd = ctga::test::urdf::random_joint_vector<locked_tree>(rng);
+        const ch::joint_vector<locked_tree> qdd = ctga::test::urdf::random_joint_vector<locked_tree>(rng);
+        ch::configuration<free_tree> qf{};
+        ch::joint_vector<free_tree> qdf{}, qddf{};
+        for (std::size_t k = 0; k < locked_tree::nv; ++k) qf[in_free[k]] = q[k], qdf[in_free[k]] = qd[k], qddf[in_free[k]] = qdd[k];
+        for (const auto& [joint, value] : locked)
+            for (std::size_t b = 0; b < free_tree::size; ++b)
+                if (gripper_free::joint_names[b] == joint) qf[free_tree::q_offset[b]] = value;
+        const auto pl = frame_poses(l, ch::forward_kinematics(l, q));
+        const auto pf = frame_poses(f, ch::forward_kinematics(f, qf));
+        for (std::size_t k = 0; k < locked_tree::frame_count; ++k) {
+            INFO("frame " << locked_tree::frame_names[k]);
+            CHECK(W("frame pose, locked vs free at the locked values", pose_error(pl[k], pf[k])) < 1e-12);
+        }
+        // the free model's rows of the free coordinates, the locked ones at rest (q̇ = q̈ = 0): for
+        // random q̈ this is H's block too (τ = H q̈ + C), so CRBA is not instantiated here
+        const Eigen::VectorXd tl = eigen_vector(ch::rnea(l, q, qd, qdd)), tf = eigen_vector(ch::rnea(f, qf, qdf, qddf));
+        Eigen::VectorXd t_rows(3);
+        for (std::size_t r = 0; r < 3; ++r) t_rows[static_cast<Eigen::Index>(r)] = tf[static_cast<Eigen::Index>(in_free[r])];
+        CHECK(W("RNEA, locked vs the free rows", rel(tl, t_rows)) < 1e-12);
+    }
+    ctga::test::urdf::print_worst("urdf fixtures: limited_gripper locked vs free");
+}
+
+TEST_CASE("urdf fixtures: limited_gripper's make_limits are the URDF's numbers, its armatures are in the model, its mass-0 tensors in the inertia") {
+    constexpr double inf = std::numeric_limits<double>::infinity();
+    // velocity numbers: shoulder, elbow, wrist (continuous: no bounds), spinner (continuous, no
+    // <limit>, friction only), finger_left, thumb; the mimic finger_right has none
+    const auto lim = gripper_free::make_limits<double>();
+    REQUIRE(lim);
+    CHECK(lim->lower == std::array<double, 6>{-2.5, -0.3, -inf, -inf, 0.0, 0.2});
+    CHECK(lim->upper == std::array<double, 6>{2.5, 2.0, inf, inf, 0.04, 1.0});
+    CHECK(lim->velocity == std::array<double, 6>{3.0, 4.0, 6.0, inf, 0.1, 1.0});
+    CHECK(lim->effort == std::array<double, 6>{80.0, 40.0, 10.0, inf, 20.0, 5.0});
+    CHECK(lim->damping == std::array<double, 6>{0.5, 0.1, 0, 0, 0, 0});
+    CHECK(lim->friction == std::array<double, 6>{0.2, 0, 0, 0.01, 0, 0});
+    CHECK(free_tree::v_offset[6] == 5);  // thumb, body 6
+    const auto lim_locked = gripper_locked::make_limits<float>();  // shoulder, wrist, spinner
+    REQUIRE(lim_locked);
+    CHECK(lim_locked->lower == std::array<float, 3>{-2.5f, -std::numeric_limits<float>::infinity(), -std::numeric_limits<float>::infinity()});
+    CHECK(lim_locked->friction == std::array<float, 3>{0.2f, 0, 0.01f});
+    // the armatures of the joints with no inertia below them, and massless_subtree counts them
+    auto f = built(gripper_free::make_model<double>());
+    CHECK(f.link<4>().armature == 0.01);  // finger_left
+    CHECK(f.link<6>().armature == 0.01);  // thumb
+    CHECK(f.link<0>().armature == 0);
+    CHECK(ch::massless_subtree(f) == -1);
+    f.link<6>().armature = 0;
+    CHECK(ch::massless_subtree(f) == 6);
+    f.link<6>().armature = 0.01;
+    f.link<4>().armature = 0;
+    CHECK(ch::massless_subtree(f) == 4);
+    f.link<4>().armature = 0.01;
+    // the rotor: mass 0, its tensor only (spinner turns about x: the rotational inertia loads it)
+    CHECK(f.link<3>().inertia.mass() == 0);
+    CHECK(f.link<3>().inertia.inertia_o() == ctga::mat3<double>{{{2e-5, 0, 0}, {0, 1e-5, 0}, {0, 0, 1e-5}}});
+    f.link<3>().inertia = ctga::body_inertia<double>{};
+    CHECK(ch::massless_subtree(f) == 3);
+    // the hand's body: the hand (0.5 kg at (0, 0, 0.04)) and the mass-0 sensor's tensor turned by
+    // its yaw 0.7, without a parallel-axis term
+    const auto g = built(gripper_free::make_model<double>());
+    const mat3 R = rpy_rotation({0, 0, 0.7});
+    mat3 Is;
+    Is << 1e-4, 1e-5, 0, 1e-5, 2e-4, 0, 0, 0, 2.5e-4;
+    const vec3 c(0, 0, 0.04);
+    const mat3 Ih = vec3(4e-4, 3e-4, 2e-4).asDiagonal();
+    const mat3 expected = Ih + 0.5 * (c.squaredNorm() * mat3::Identity() - c * c.transpose()) + R * Is * R.transpose();
+    const ctga::mat3<double> io = g.link<2>().inertia.inertia_o();
+    double e = 0;
+    for (Eigen::Index i = 0; i < 3; ++i)
+        for (Eigen::Index j = 0; j < 3; ++j) e = std::max(e, std::abs(io[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)] - expected(i, j)));
+    CHECK(e < 1e-17);
+    CHECK(g.link<2>().inertia.mass() == 0.5);
 }
 #endif

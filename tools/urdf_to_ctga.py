@@ -1029,8 +1029,8 @@ def _massless_option(failing, opts, locks, armatures, mimics):
         if others:
             also = "; the same for " + ", ".join(others[:4])
             also += f" and {len(others) - 4} more" if len(others) > 4 else ""
-        raise UrdfError(f'joint "{first.name}": {NO_MASS}: {SINGULAR} (no armature either, nor, for a revolute '
-                        f"joint, a rotational inertia){also}. Options: "
+        raise UrdfError(f'joint "{first.name}": {NO_MASS}: {SINGULAR} (no armature either, nor, for a joint that '
+                        f"turns, a rotational inertia){also}. Options: "
                         "--massless lock (fix such joints at 0), --massless armature=VALUE (give them a rotor inertia), "
                         f"or per joint --lock {first.name}[=VALUE], --armature {first.name}=VALUE")
     for j in joints:

@@ -171,6 +171,9 @@ draw<Tree> make_draw(std::mt19937_64& rng) {
             }();
             REQUIRE(link);
             d.m.template link<I>() = *link;
+            // every third joint of one degree of freedom has a rotor (armature), from the numbers drawn
+            if constexpr (J::nv == 1)
+                if (I % 3 == 1) d.m.template link<I>().armature = b.armature = 0.1 * b.mass;
         }(), ...);
     }(std::make_index_sequence<Tree::size>{});
     // the state: the reference's q for a floating joint is (x, y, z, qw, qx, qy, qz), ctga's the motor

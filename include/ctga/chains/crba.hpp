@@ -244,8 +244,12 @@ struct crba_cost {
 struct crba_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr joint_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q) const noexcept {
-        if constexpr (algorithm_detail::crba_cost<Tree>::in_world) return algorithm_detail::crba_world(m, q);
-        else return algorithm_detail::crba_local(m, q);
+        joint_matrix<Tree, T> H = [&] {
+            if constexpr (algorithm_detail::crba_cost<Tree>::in_world) return algorithm_detail::crba_world(m, q);
+            else return algorithm_detail::crba_local(m, q);
+        }();
+        each_armature(m, [&](std::size_t k, const T& a) { H[k][k] += a; });  // a joint's rotor: H_kk + a_k
+        return H;
     }
 };
 inline constexpr crba_t crba{};

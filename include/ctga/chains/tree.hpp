@@ -283,6 +283,24 @@ struct model {
     [[nodiscard]] constexpr const auto& link() const noexcept { return boost::hana::at_c<I>(links); }
 };
 
+// f(k, a) for every joint with an armature a (joints of one degree of freedom), k its velocity
+// number, in body order.
+template <class Tree, class T, class F>
+constexpr void each_armature(const model<Tree, T>& m, F&& f) noexcept {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            if constexpr (Tree::template joint_at<I>::nv == 1) f(Tree::v_offset[I], m.template link<I>().armature);
+        }(), ...);
+    }(std::make_index_sequence<Tree::size>{});
+}
+// The armatures by velocity number (0 where a joint has none: a floating joint's six).
+template <class Tree, class T>
+[[nodiscard]] constexpr std::array<T, Tree::nv> armature_by_dof(const model<Tree, T>& m) noexcept {
+    std::array<T, Tree::nv> a{};
+    each_armature(m, [&](std::size_t k, const T& x) { a[k] = x; });
+    return a;
+}
+
 // ---- checked construction ---------------------------------------------------------------------
 
 namespace tree_detail {

@@ -16,7 +16,7 @@
 namespace {
 
 namespace ch = ctga::chains;
-using robot = ch::tree<ch::link<-1, ch::floating>, ch::link<0, ch::revolute_about>, ch::link<1, ch::aligned<ch::revolute_y>>,
+using robot = ch::tree<ch::link<-1, ch::floating>, ch::link<0, ch::with_armature<ch::revolute_about>>, ch::link<1, ch::aligned<ch::revolute_y>>,
                        ch::link<0, ch::prismatic_along>, ch::link<3, ch::mimic<ch::revolute_x, 2>>,
                        ch::fixed_frame<"tool", 4>>;
 using mat4 = std::array<std::array<double, 4>, 4>;
@@ -42,7 +42,7 @@ ch::model<robot> make_robot(std::mt19937_64& rng) {
     };
     ch::model<robot> m;
     m.link<0>() = *ch::make_link<ch::floating>(ctga::motor<double>{1, 0, 0, 0, 0, 0, 0, 0}, mass());
-    m.link<1>() = *ch::make_link<ch::revolute_about>(placement(rng), mass(), unit_axis(rng));
+    m.link<1>() = *ch::make_link<ch::with_armature<ch::revolute_about>>(placement(rng), mass(), unit_axis(rng));
     m.link<2>() = *ch::make_link<ch::aligned<ch::revolute_y>>(ctga::motor<double>(ctga::make_translator(0.1, 0.3, -0.2)), mass());
     m.link<3>() = *ch::make_link<ch::prismatic_along>(placement(rng), mass(), unit_axis(rng));
     m.link<4>() = *ch::make_link<ch::mimic<ch::revolute_x, 2>>(placement(rng), mass(), ch::coupling<double>{-0.7, 0.1});
@@ -276,7 +276,8 @@ TEST_CASE("a joint's armature: τ + a q̈, H_ii + a, the rotor's energy, and a m
         }
     // a chain whose last joint carries no mass: refused, unless it has an armature, or (turning) a
     // rotational inertia
-    using arm = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_y>, ch::link<1, ch::prismatic_x>>;
+    using arm = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::with_armature<ch::revolute_y>>,
+                         ch::link<1, ch::with_armature<ch::prismatic_x>>>;
     ch::model<arm> a;
     a.link<0>().inertia = ctga::body_inertia_of(*ctga::make_principal_mass_properties(1.0, 0.1, 0.1, 0.1));
     CHECK(ch::massless_subtree(a) == 1);

@@ -205,10 +205,10 @@ DERIVATIVES_CASE("1 and 2 bodies") {
 #endif
 #if CTGA_TEST_PART_HOLDS(1)
 // (about half its joints aligned: placements translations, joints.hpp)
-DERIVATIVES_CASE("5 bodies, aligned joints among them") { compare<random_structure<3, 5, false, true>::type, false>(23, 10); }
+DERIVATIVES_CASE("5 bodies, aligned joints among them") { compare<random_structure<3, 5, false, true, true>::type, false>(23, 10); }
 #endif
 #if CTGA_TEST_PART_HOLDS(2)
-DERIVATIVES_CASE("7 bodies on a floating base") { compare<random_structure<4, 7, true>::type, false>(24, 10); }
+DERIVATIVES_CASE("7 bodies on a floating base") { compare<random_structure<4, 7, true, false, true>::type, false>(24, 10); }
 #endif
 #if CTGA_TEST_PART_HOLDS(3)
 DERIVATIVES_CASE("the legged tree") { compare<legged, false>(25, 5); }

@@ -347,7 +347,7 @@ TEST_CASE("chains: bad input is reported, never a silent NaN" CTGA_TEST_PART_NAM
         auto ql = random_q<legged>(rng);
         REQUIRE(ch::checked_call(ch::crba, ml, ql));
         for (std::size_t k = 0; k < 4; ++k) ql[k] = 0;
-        CHECK(ch::checked_call(ch::crba, ml, ql).error == ctga::error_code::not_a_motor);
+        CHECK(ch::checked_call(ch::crba, ml, ql).error == ctga::error_code::not_a_unit_base);
     }
     SECTION("invalid inertias and axes, when the model is built") {
         const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(0.0, 0.0, 0.3), ctga::make_rotor(0.0, 0.0, 0.0, 1.0));

@@ -7,7 +7,7 @@
 //     joints slide (no cos or sin: the same operations in the same order).
 //   - batch_call: robots gathered from an array of structures, N not a multiple of the lane count,
 //     on one and on two threads, with poisoned robots (a NaN in q, a floating base whose rotor is
-//     zero, a NaN in q̇): those are reported (non_finite, not_a_motor), every other robot's
+//     zero, a NaN in q̇): those are reported (non_finite, not_a_unit_base), every other robot's
 //     results are bit for bit those of an all-healthy batch.
 //   - batch_integrate: lie_rk4 and the implicit midpoint (Newton and fixed point) over robots on a
 //     floating base, each lane against ctga::integrate of its robot alone; a robot too fast for
@@ -219,7 +219,7 @@ void check_batch(std::uint64_t seed, std::size_t n, unsigned threads) {
         CHECK(h.error == ctga::error_code::none);
         CHECK(lane_error(ch::load<1>(healthy, i, &state::qdd), ch::aba(d.m, h.q, h.qd, h.tau), 0) <= 1e-14);
         const ctga::error_code expected = i == 2 || i == n - 1 ? ctga::error_code::non_finite
-                                          : i == n - 2         ? ctga::error_code::not_a_motor
+                                          : i == n - 2         ? ctga::error_code::not_a_unit_base
                                                                : ctga::error_code::none;
         CHECK(poisoned[i].error == expected);
         if (expected == ctga::error_code::none)
@@ -346,11 +346,11 @@ void check_checked_call(std::uint64_t seed) {
     for (std::size_t l = 0; l < L; ++l) {
         INFO("lane " << l);
         const ctga::error_code expected = l == 0 || l == 1 || l == 3 ? ctga::error_code::non_finite
-                                          : l == 2                   ? ctga::error_code::not_a_motor
+                                          : l == 2                   ? ctga::error_code::not_a_unit_base
                                                                      : ctga::error_code::none;
         CHECK(tau.error[l] == expected);
         CHECK(healthy.error[l] == (l == 1 || l == 3 ? ctga::error_code::non_finite
-                                   : l == 2         ? ctga::error_code::not_a_motor
+                                   : l == 2         ? ctga::error_code::not_a_unit_base
                                                     : ctga::error_code::none));
         const robot<Tree>& r = x.robots[l];
         if (expected == ctga::error_code::none) {
@@ -362,7 +362,7 @@ void check_checked_call(std::uint64_t seed) {
     // the scalar form reports the same way
     ch::configuration<Tree> q = x.robots[2].q;
     for (std::size_t c = 0; c < 4; ++c) q[c] = 0;
-    CHECK(ch::checked_call(ch::rnea, x.d.m, q, x.robots[2].qd, x.robots[2].qdd).error == ctga::error_code::not_a_motor);
+    CHECK(ch::checked_call(ch::rnea, x.d.m, q, x.robots[2].qd, x.robots[2].qdd).error == ctga::error_code::not_a_unit_base);
 }
 
 // load and store between robots' arrays and packs: every number in its lane and back, for K ≥ L
@@ -396,7 +396,7 @@ void check_load_store() {
 #define PACKS_CASE(name) TEST_CASE("chains on packs: " name CTGA_TEST_PART_NAME)
 #if CTGA_TEST_PART_HOLDS(0)
 PACKS_CASE("every lane equals the double algorithms on its robot, 5 bodies, 4 lanes") {
-    compare<random_structure<51, 5, false, true>::type, 4>(51, 1e-14);
+    compare<random_structure<51, 5, false, true, true>::type, 4>(51, 1e-14);
 }
 #endif
 #if CTGA_TEST_PART_HOLDS(1)
@@ -406,7 +406,7 @@ PACKS_CASE("sliding joints on a floating base: every lane bit for bit the double
 #endif
 #if CTGA_TEST_PART_HOLDS(2)
 PACKS_CASE("every lane equals the double algorithms on its robot, 5 bodies on a floating base, 8 lanes") {
-    compare<random_structure<52, 5, true, true>::type, 8>(53, 1e-14);
+    compare<random_structure<52, 5, true, true, true>::type, 8>(53, 1e-14);
 }
 #endif
 #if CTGA_TEST_PART_HOLDS(3)

@@ -122,15 +122,15 @@ CHAINS_CASE(0, "1 to 7 bodies") {
     compare<random_structure<1, 1, false>::type>(11, 20);
     compare<random_structure<2, 2, false>::type>(12, 20);
     compare<random_structure<3, 5, false>::type>(13, 20);
-    compare<random_structure<4, 7, true>::type>(14, 20);
+    compare<random_structure<4, 7, true, false, true>::type>(14, 20);  // (with armatures)
 }
 #endif
 #if CTGA_TEST_PART_HOLDS(10)
 // About half the joints aligned (placements translations: each body's map a turn about an axis, or
 // none, whose zeros the transforms skip), on a fixed and on a floating base.
 CHAINS_CASE(10, "aligned joints") {
-    compare<random_structure<41, 7, false, true>::type>(41, 20);
-    compare<random_structure<42, 9, true, true>::type>(42, 20);
+    compare<random_structure<41, 7, false, true, true>::type>(41, 20);
+    compare<random_structure<42, 9, true, true, true>::type>(42, 20);
 }
 #endif
 #if CTGA_TEST_PART_HOLDS(1)

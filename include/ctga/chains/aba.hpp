@@ -4,7 +4,7 @@
 //
 // Three passes (Featherstone Table 7.1), in body coordinates:
 //   out:  v_i = X_i⁻¹ v_λ + S_i q̇_i,  c_i = v_i × S_i q̇_i,  N^A_i = N_i,  p^A_i = v_i ×* (N_i v_i) − f_ext,i
-//   in:   U_i = N^A_i S_i,  D_i = U_i(S_i),  u_i = τ_i − p^A_i(S_i), and the parent receives
+//   in:   U_i = N^A_i S_i,  D_i = U_i(S_i) + a_i (a_i: the joint's armature, tree.hpp),  u_i = τ_i − p^A_i(S_i), and the parent receives
 //         N^A_λ += X_i (N^A_i − U_i U_iᵀ/D_i),  p^A_λ += X_i (p^a_i),
 //         p^a_i = p^A_i + N^a_i c_i + U_i u_i/D_i
 //   out:  a'_i = X_i⁻¹ a_λ + c_i,  q̈_i = (u_i − U_i(a'_i))/D_i,  a_i = a'_i + S_i q̈_i
@@ -39,10 +39,12 @@
 namespace ctga::chains {
 
 namespace algorithm_detail {
-// The screw component an axis joint's S lies on, 6 for any other joint.
+// The screw component an axis joint's S lies on, where N^a = N^A − U Uᵀ/D has a zero row and
+// column; 6 for any other joint.
+// (With an armature a, N^a S = U a/D: no component is zero.)
 template <class J>
 constexpr std::size_t null_component() {
-    if constexpr (requires { J::component; }) return J::component;
+    if constexpr (requires { J::component; } && !has_armature<J>) return J::component;
     else return 6;
 }
 // A tree with mimic joints (joints.hpp) couples a mimic and its master, often on different
@@ -102,7 +104,8 @@ constexpr joint_vector<Tree, T> articulated_body(const model<Tree, T>& m, const 
         if constexpr (J::nv == 1) {
             const auto S = J::template subspace<0, T>(L.joint);
             U[i] = momentum(NA[i], S);
-            D_inverse[i] = T(1) / pairing(U[i], S);
+            if constexpr (has_armature<J>) D_inverse[i] = T(1) / (pairing(U[i], S) + L.armature);  // + the rotor's
+            else D_inverse[i] = T(1) / pairing(U[i], S);
             u[i] = tau[b.v_own] - pairing(pA[i], S);
             if constexpr (!B::root) {
                 // an axis joint's S is one screw component: N^a has a zero row and column there

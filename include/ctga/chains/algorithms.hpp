@@ -25,6 +25,7 @@
 #include "ctga/chains/center_of_mass.hpp"
 #include "ctga/chains/centroidal.hpp"
 #include "ctga/chains/checked_call.hpp"
+#include "ctga/chains/configuration_space.hpp"
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/energy.hpp"
 #include "ctga/chains/forward_kinematics.hpp"

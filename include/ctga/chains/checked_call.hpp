@@ -132,8 +132,11 @@ template <class Tree, class T>
 template <class Tree, class T>
 [[nodiscard]] constexpr error_of_t<T> check_configuration(const std::array<T, Tree::nq>& q) noexcept {
     finite_mask<T> unit = every<T>();
-    for (std::size_t i = 0; i < Tree::size; ++i)
-        if (Tree::nq_of[i] == 8) unit = unit && unit_motor(q.data() + Tree::q_offset[i]);
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            if constexpr (Tree::nq_of[I] == 8) unit = unit && unit_motor(q.data() + Tree::q_offset[I]);
+        }(), ...);
+    }(std::make_index_sequence<Tree::size>{});
     const error_of_t<T> e = first_failure(error_of_t<T>{}, finite_all<T>(q), error_code::non_finite);
     return first_failure(e, unit, error_code::not_a_unit_base);
 }

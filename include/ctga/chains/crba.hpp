@@ -143,6 +143,12 @@ CTGA_ALWAYS_INLINE constexpr void clear_for_fill(joint_matrix<Tree, T>& H) noexc
     }
 }
 
+// H_kk + a_k for a joint with an armature (with_armature: its rotor).
+template <class Tree, class T>
+CTGA_ALWAYS_INLINE constexpr void add_armature(const model<Tree, T>& m, joint_matrix<Tree, T>& H) noexcept {
+    each_armature(m, [&](std::size_t k, const T& a) { H[k][k] += a; });
+}
+
 // The local form (the header's first).
 template <class Tree, class T>
 constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
@@ -182,6 +188,7 @@ constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const config
                 }(), ...);
             }(std::make_index_sequence<is_mimic<J> ? 1 : J::nv>{});
     });
+    add_armature(m, H);
     return H;
 }
 
@@ -204,6 +211,7 @@ constexpr joint_matrix<Tree, T> crba_world(const model<Tree, T>& m, const config
             }
             for (std::size_t j = Tree::v_offset[i]; j <= k; ++j) H[j][k] = H[k][j] = pairing(F, g.S[j]);
         }
+    add_armature(m, H);
     return H;
 }
 

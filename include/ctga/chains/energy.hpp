@@ -16,7 +16,8 @@
 namespace ctga::chains {
 
 struct tree_kinetic_energy_t {
-    // ½ Σ v_i ∨ … : the kinetic energy ½ s̄ ∨ (N ∧ s) of §5, summed over the bodies.
+    // ½ Σ v_i ∨ … : the kinetic energy ½ s̄ ∨ (N ∧ s) of §5, summed over the bodies, and the joints'
+    // rotors' ½ a q̇² (armature, tree.hpp).
     template <class Tree, class T>
     [[nodiscard]] constexpr T operator()(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                              const joint_vector<Tree, T>& qd) const noexcept {
@@ -28,6 +29,7 @@ struct tree_kinetic_energy_t {
             constexpr std::size_t i = decltype(body)::value;
             e = e + ctga::kinetic_energy(m.template link<i>().inertia, k.v[i]);
         });
+        each_armature(m, [&](std::size_t j, const T& a) { e = e + T(0.5) * a * qd[j] * qd[j]; });  // the rotors' ½ a q̇²
         return e;
     }
 };

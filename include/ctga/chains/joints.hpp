@@ -20,6 +20,7 @@
 //   mimic<J, M>             J (one dof) at q = r q_M + o, body M's joint    nq = nv = 0
 //   aligned<J>              J whose joint frame is aligned with the parent's: its placement a
 //                           pure translation (URDF rpy = 0, most joints of real robots)
+//   with_armature<J>        J (one dof) with a rotor inertia reflected onto it (H_ii + a)
 //
 // The body frame is the joint frame moved by the joint: its map in the parent's frame is
 // placement ∘ motion(q), a motor_map (R, t) (motor.hpp). For an aligned joint R is the joint's own
@@ -358,6 +359,25 @@ template <class J>
 inline constexpr bool is_aligned<aligned<J>> = true;
 template <class J, std::size_t M>
 inline constexpr bool is_aligned<mimic<J, M>> = is_aligned<J>;
+
+// A joint J of one degree of freedom driven through a gear: the inertia of its motor's rotor,
+// reflected (J_rotor · ratio²), its armature, a run-time parameter (link_parameters::armature),
+// adds to the joint's own entry of the mass matrix, H_ii + a. Its type says so, because ABA's
+// articulated inertia N^A − U Uᵀ/D keeps S's component zero only without it (N^a S = U a/D): a
+// joint without armature keeps that structure and pays nothing. With an aligned placement:
+// aligned<with_armature<J>>.
+template <class J>
+struct with_armature : J {
+    static_assert(J::nq == 1 && J::nv == 1 && !is_mimic<J>,
+                  "ctga::chains::with_armature: a joint with an armature has one degree of freedom of its own (revolute, "
+                  "prismatic; a mimic joint's rotor belongs to its master)");
+};
+template <class J>
+inline constexpr bool has_armature = false;
+template <class J>
+inline constexpr bool has_armature<with_armature<J>> = true;
+template <class J>
+inline constexpr bool has_armature<aligned<J>> = has_armature<J>;
 
 // The shape of R in a body's map placement ∘ motion(q) (linear3.hpp): dense unless the joint is aligned.
 template <class J>

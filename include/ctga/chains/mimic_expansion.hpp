@@ -72,6 +72,7 @@ struct expansion {
                     o[all::v_offset[I]] = from.joint.offset;
                 } else {
                     to.joint = from.joint;
+                    to.armature = from.armature;  // (a mimic has none: its expanded joint's is 0)
                 }
             }(), ...);
         }(std::make_index_sequence<Tree::size>{});

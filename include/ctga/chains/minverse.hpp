@@ -119,6 +119,7 @@ constexpr void minverse_backward_step(std::size_t j, const world_geometry<Tree, 
     for (std::size_t c = 0; c < K; ++c) U[o + c] = momentum(NA[j], g.S[o + c]);
     for (std::size_t a = 0; a < K; ++a)
         for (std::size_t b = a; b < K; ++b) D[a][b] = D[b][a] = pairing(U[o + b], g.S[o + a]);
+    for (std::size_t a = 0; a < K; ++a) D[a][a] += g.armature[o + a];  // D = Sᵀ N^A S + the joint's armature
     const std::array<std::array<T, K>, K> Dinv = joint_inverse(D);
     // S D⁻¹, so that a row D⁻¹ Sᵀ F is K pairings
     std::array<screw<T>, K> SD;

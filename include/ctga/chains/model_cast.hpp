@@ -47,7 +47,7 @@ template <class U, class Tree, class T>
             auto& b = out.template link<I>();
             b.placement = cast_map<U>(a.placement);
             b.inertia = parameters_cast<U>(a.inertia);
-            if constexpr (J::nv == 1) b.armature = U(a.armature);
+            if constexpr (has_armature<J>) b.armature = U(a.armature);
             if constexpr (is_mimic<J>) {
                 b.joint.multiplier = U(a.joint.multiplier);
                 b.joint.offset = U(a.joint.offset);

@@ -26,6 +26,7 @@
 #include "ctga/chains/aba.hpp"
 #include "ctga/chains/aba_derivatives.hpp"
 #include "ctga/chains/checked_call.hpp"
+#include "ctga/chains/configuration_space.hpp"
 #include "ctga/chains/energy.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
@@ -69,20 +70,6 @@ struct passive {
     }
 };
 
-namespace motion_detail {
-template <class T>
-constexpr motor<T> motor_at(const T* q) noexcept {
-    return motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]};
-}
-template <class T>
-constexpr screw<T> screw_at(const T* v) noexcept {
-    return screw<T>{v[0], v[1], v[2], v[3], v[4], v[5]};
-}
-template <class X>
-constexpr void put(const X& x, std::size_t n, auto* out) noexcept {
-    for (std::size_t i = 0; i < n; ++i) out[i] = x[i];
-}
-}  // namespace motion_detail
 
 template <class Tree, class T = double, class Actuation = passive>
 struct tree_motion {
@@ -112,34 +99,34 @@ struct tree_motion {
     [[nodiscard]] constexpr motor_type motor_rate(const motor_type& q, const screw_type& qd) const noexcept {
         return per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t vo, motor_type& out) {
             using J = decltype(joint);
-            if constexpr (J::nq == 8) motion_detail::put(motor<T>(half * motion_detail::motor_at(&q[qo]) * motion_detail::screw_at(&qd[vo])), 8, &out[qo]);
+            if constexpr (J::nq == 8) configuration_detail::put(motor<T>(half * configuration_detail::motor_at(&q[qo]) * configuration_detail::screw_at(&qd[vo])), 8, &out[qo]);
             else if constexpr (J::nq == 1) out[qo] = qd[vo];
         });
     }
     [[nodiscard]] constexpr motor_type exp(const screw_type& z) const noexcept {
         return per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t vo, motor_type& out) {
             using J = decltype(joint);
-            if constexpr (J::nq == 8) motion_detail::put(ctga::exp(motion_detail::screw_at(&z[vo])), 8, &out[qo]);
+            if constexpr (J::nq == 8) configuration_detail::put(ctga::exp(configuration_detail::screw_at(&z[vo])), 8, &out[qo]);
             else if constexpr (J::nq == 1) out[qo] = z[vo];
         });
     }
     [[nodiscard]] constexpr motor_type compose(const motor_type& a, const motor_type& b) const noexcept {
         return per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t, motor_type& out) {
             using J = decltype(joint);
-            if constexpr (J::nq == 8) motion_detail::put(motor<T>(motion_detail::motor_at(&a[qo]) * motion_detail::motor_at(&b[qo])), 8, &out[qo]);
+            if constexpr (J::nq == 8) configuration_detail::put(motor<T>(configuration_detail::motor_at(&a[qo]) * configuration_detail::motor_at(&b[qo])), 8, &out[qo]);
             else if constexpr (J::nq == 1) out[qo] = a[qo] + b[qo];
         });
     }
     [[nodiscard]] constexpr screw_type bracket(const screw_type& a, const screw_type& b) const noexcept {
         return per_joint<screw_type>([&](auto joint, std::size_t, std::size_t vo, screw_type& out) {
             using J = decltype(joint);
-            if constexpr (J::nv == 6) motion_detail::put(ctga::bracket(motion_detail::screw_at(&a[vo]), motion_detail::screw_at(&b[vo])), 6, &out[vo]);
+            if constexpr (J::nv == 6) configuration_detail::put(ctga::bracket(configuration_detail::screw_at(&a[vo]), configuration_detail::screw_at(&b[vo])), 6, &out[vo]);
         });
     }
     [[nodiscard]] constexpr motor_type renormalize(const motor_type& q) const noexcept {
         motor_type out = q;
         per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t, motor_type&) {
-            if constexpr (decltype(joint)::nq == 8) motion_detail::put(ctga::renormalize(motion_detail::motor_at(&q[qo])), 8, &out[qo]);
+            if constexpr (decltype(joint)::nq == 8) configuration_detail::put(ctga::renormalize(configuration_detail::motor_at(&q[qo])), 8, &out[qo]);
         });
         return out;
     }
@@ -149,7 +136,7 @@ struct tree_motion {
     [[nodiscard]] constexpr bool unit(const motor_type& q) const noexcept {
         bool ok = true;
         per_joint<motor_type>([&](auto joint, std::size_t qo, std::size_t, motor_type&) {
-            if constexpr (decltype(joint)::nq == 8) ok = ok && near_unit(motion_detail::motor_at(&q[qo]));
+            if constexpr (decltype(joint)::nq == 8) ok = ok && near_unit(configuration_detail::motor_at(&q[qo]));
         });
         return ok;
     }

@@ -5,7 +5,7 @@
 //
 //   f_i = N_i a_i + v_i ×* (N_i v_i) − f_ext,i         (N s = A ∨ (N ∧ s), the momentum of §5)
 //   τ_i = f_i(S_i) = f_i ∨ (Q0 ∧ S_i),  f_λ += X_i f_i  (the pairing of §5; ḡ f ḡ* moves f out)
-// and a mimic joint's r f_i(S_i) is added to its master's τ.
+// and a mimic joint's r f_i(S_i) is added to its master's τ; a joint's armature a_i adds a_i q̈_i.
 #pragma once
 
 #include <cstddef>
@@ -47,6 +47,8 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
             }(std::make_index_sequence<J::nv>{});
         if constexpr (!B::root) f[body.p] = f[body.p] + transform<map_shape<J>>(k.X[i], f[i]);
     });
+    // a joint's armature a_k: τ_k += a_k q̈_k (its rotor, reflected onto the joint)
+    each_armature(m, [&](std::size_t k, const T& a) { tau[k] += a * qdd[k]; });
     // a mimic joint's torque r f_i(S_i) goes to its master (τ = Gᵀ τ_all, joints.hpp); f_i is final
     // once body i has passed it on
     if constexpr (Tree::has_mimic)

@@ -216,6 +216,11 @@ private:
                                        tree_matrix<Tree, T, sparsity::branches>(uninitialized),
                                        tree_matrix<Tree, T, sparsity::branches>(uninitialized)};
             derivative_backward(d, out);
+            // a joint's armature a_k: τ_k += a_k q̈_k and M_kk += a_k (∂τ/∂q, ∂τ/∂q̇ do not see it)
+            each_armature(m, [&](std::size_t k, const T& a) {
+                out.tau[k] += a * qdd[k];
+                out.M(k, k) += a;
+            });
             return out;
         }
     }

@@ -235,13 +235,20 @@ constexpr motor_map<T> identity_map() noexcept {
 }
 }  // namespace tree_detail
 
-// A joint's armature: the inertia of the rotor that drives a joint of one degree of freedom (a
-// motor's rotor behind its gear, reflected: J_rotor · ratio²), kg m² (revolute) or kg (prismatic).
-// It adds to the joint's own entry of the mass matrix, H_ii + a_i, so RNEA adds a_i q̈_i, CRBA
-// a_i to H_ii and ABA a_i to D_i. Joints of other kinds have none (no_armature: an empty member).
-struct no_armature {};
+// A joint's armature (with_armature<J>, joints.hpp): the reflected rotor inertia a, kg m² for a
+// revolute joint, kg for a prismatic one. Other joints have none: an empty member, which a number
+// cannot be assigned to.
+struct no_armature {
+    template <class T>
+    no_armature& operator=(const T&) noexcept {
+        static_assert(sizeof(T) == 0,
+                      "ctga::chains: this joint has no armature: declare it with_armature<J> (aligned<with_armature<J>>) "
+                      "in the tree type");
+        return *this;
+    }
+};
 template <joint Joint, class T>
-using armature_of = std::conditional_t<Joint::nv == 1, T, no_armature>;
+using armature_of = std::conditional_t<has_armature<Joint>, T, no_armature>;
 
 // The run-time parameters of one body.
 template <joint Joint, class T = double>
@@ -249,7 +256,7 @@ struct link_parameters {
     motor_map<T> placement = tree_detail::identity_map<T>();  // joint frame in the parent's
     body_inertia<T> inertia{};                                      // N by (m, h, I_o), body frame
     typename Joint::template parameters<T> joint{};                 // e.g. the unit axis of revolute_about
-    [[no_unique_address]] armature_of<Joint, T> armature{};         // a 1-dof joint's rotor inertia (0: none)
+    [[no_unique_address]] armature_of<Joint, T> armature{};         // with_armature<J>'s rotor inertia
 };
 
 namespace tree_detail {
@@ -282,6 +289,23 @@ struct model {
     template <std::size_t I>
     [[nodiscard]] constexpr const auto& link() const noexcept { return boost::hana::at_c<I>(links); }
 };
+
+// f(k, a) for every joint with an armature a (with_armature), k its velocity number, in body order.
+template <class Tree, class T, class F>
+constexpr void each_armature(const model<Tree, T>& m, F&& f) noexcept {
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+            if constexpr (has_armature<typename Tree::template joint_at<I>>) f(Tree::v_offset[I], m.template link<I>().armature);
+        }(), ...);
+    }(std::make_index_sequence<Tree::size>{});
+}
+// The armatures by velocity number (0 where a joint has none: a floating joint's six).
+template <class Tree, class T>
+[[nodiscard]] constexpr std::array<T, Tree::nv> armature_by_dof(const model<Tree, T>& m) noexcept {
+    std::array<T, Tree::nv> a{};
+    each_armature(m, [&](std::size_t k, const T& x) { a[k] = x; });
+    return a;
+}
 
 // ---- checked construction ---------------------------------------------------------------------
 

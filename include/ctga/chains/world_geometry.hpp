@@ -29,6 +29,7 @@ struct world_geometry {
     std::array<motor_map<T>, Tree::size> pose;  // body i in the world
     std::array<body_inertia<T>, Tree::size> N;  // body i's own inertia, world frame
     std::array<screw<T>, Tree::nv> S;           // dof k's free direction, world frame
+    std::array<T, Tree::nv> armature;           // dof k's armature (tree.hpp; 0 where a joint has none)
 
     explicit constexpr world_geometry(uninitialized_t) : S(uninitialized_array<screw<T>, Tree::nv>()) {}
 };
@@ -48,6 +49,7 @@ constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree,
         }(std::make_index_sequence<J::nv>{});
     });
     [&]<std::size_t... I>(std::index_sequence<I...>) { ((g.N[I] = m.template link<I>().inertia), ...); }(std::make_index_sequence<Tree::size>{});
+    g.armature = armature_by_dof(m);
     for (std::size_t i = 0; i < Tree::size; ++i) g.N[i] = transform(g.pose[i], g.N[i]);
 }
 

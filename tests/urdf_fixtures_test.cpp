@@ -685,7 +685,9 @@ TEST_CASE("urdf fixtures: limited_gripper's make_limits are the URDF's numbers, 
     auto f = built(gripper_free::make_model<double>());
     CHECK(f.link<4>().armature == 0.01);  // finger_left
     CHECK(f.link<6>().armature == 0.01);  // thumb
-    CHECK(f.link<0>().armature == 0);
+    static_assert(ch::has_armature<free_tree::joint_at<4>> && ch::has_armature<free_tree::joint_at<6>>);
+    static_assert(std::is_same_v<free_tree::joint_at<4>, ch::aligned<ch::with_armature<ch::prismatic_y>>>);
+    static_assert(!ch::has_armature<free_tree::joint_at<0>>);  // the others have none in their type
     CHECK(ch::massless_subtree(f) == -1);
     f.link<6>().armature = 0;
     CHECK(ch::massless_subtree(f) == 6);

@@ -351,6 +351,11 @@ class Converter(unittest.TestCase):
         self.assertIn('// Armatures (a joint\'s rotor inertia: revolute kg m^2, prismatic kg): "jb" 0.02 (--armature).',
                       header)
         self.assertEqual(header.count(".armature ="), 1)
+        # the joint's type says it has an armature (inside aligned<>; make_link takes the same type)
+        self.assertEqual(link_entries(header)[1],
+                         ("0", "ctga::chains::aligned<ctga::chains::with_armature<ctga::chains::revolute_y>>"))
+        self.assertIn("make_link<ctga::chains::aligned<ctga::chains::with_armature<ctga::chains::revolute_y>>>(", header)
+        self.assertEqual(link_entries(header)[0], ("-1", "ctga::chains::aligned<ctga::chains::revolute_z>"))
         self.convert(chain(joint_b=prismatic, link_b=link("b", "")), "--armature", "jb=0.5")
         # an armature of 0 is none
         self.assert_error(chain(link_b=link("b", "")), 'joint "jb"', NO_MASS, args=("--armature", "jb=0"))
@@ -426,6 +431,9 @@ class Converter(unittest.TestCase):
                                         "thumb=0.03", warnings=2)
         self.assertIn('"thumb" 0.03 (--armature), "finger_left" 0.01 (--massless armature).', header)
         self.assertIn("m.template link<6>().armature = T(0.03);  // --armature", header)
+        self.assertEqual(link_entries(header)[6], ("2", "ctga::chains::with_armature<ctga::chains::revolute_x>"))
+        self.assertEqual(link_entries(header)[5][1], "ctga::chains::mimic<ctga::chains::aligned<"
+                         "ctga::chains::prismatic<ctga::chains::axis::minus_y>>, 4>")
         # a massless mimic has no coordinate, so no armature: lock it, or make it independent
         text = fixture("limited_gripper.urdf").replace('<mass value="0.05"/>', '<mass value="0"/>')
         self.assert_error(text, 'joint "finger_right": no mass in its subtree, and --massless armature cannot help',

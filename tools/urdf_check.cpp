@@ -13,8 +13,6 @@
 #include <cmath>
 #include <cstdio>
 #include <random>
-#include <type_traits>
-#include <utility>
 
 #include CTGA_ROBOT_HEADER
 
@@ -41,14 +39,7 @@ int main() {
     }
     const ch::model<tree> m = *built;
     const bool limits = static_cast<bool>(robot::make_limits<double>());
-    // each velocity number's armature (0: none; only 1-dof joints have one)
-    ch::joint_vector<tree> armature{};
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        ([&] {
-            if constexpr (!std::is_empty_v<decltype(m.template link<I>().armature)>)
-                armature[tree::v_offset[I]] = m.template link<I>().armature;
-        }(), ...);
-    }(std::make_index_sequence<tree::size>{});
+    const auto armature = ch::armature_by_dof(m);  // 0 but for the joints declared with_armature
     std::mt19937_64 rng(2027);
     std::uniform_real_distribution<double> u(-1, 1);
     double round_trip = 0, split = 0, power = 0, asym = 0;

@@ -50,7 +50,8 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     floating (q: the 8 coefficients of a motor; v: the body screw); the URDF default axis is 1 0 0.
     A body whose placement does not turn (its joint's rpy 0 0 0, and those of the fixed joints merged
     on the way, composed exactly) gets its joint as aligned<Joint> (mimic<aligned<Joint>, M> for
-    a mimic): its map's rotation is the joint's own, whose zeros the algorithms skip.
+    a mimic, aligned<with_armature<Joint>> with an armature): its map's rotation is the joint's
+    own, whose zeros the algorithms skip.
   * planar (axis = the plane normal n) -> three bodies in a chain: prismatic along u1, prismatic
     along u2, revolute about n, (u1, u2, n) right-handed orthonormal. The first carries the joint's
     origin as its placement, the other two identity placements. The first two are massless virtual
@@ -98,10 +99,11 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     m 0 + o by default and no longer follows its master (a warning). The header lists the locked
     joints, their values and why (--lock, --massless lock, following a master).
   * Armature: --armature JOINT=VALUE (repeatable; VALUE >= 0) gives a revolute, continuous or
-    prismatic joint (not a mimic, not a locked joint) the rotor inertia VALUE:
-    m.template link<i>().armature = T(VALUE) (ctga::chains::link_parameters::armature: added to
-    the joint's diagonal entry of the mass matrix). The header lists the armatures. An option that
-    names no joint, or names one twice, is an error naming it.
+    prismatic joint (not a mimic, not a locked joint) the rotor inertia VALUE: its joint is
+    with_armature<J> (aligned<with_armature<J>>) in the tree type and make_model sets
+    m.template link<i>().armature = T(VALUE) (added to the joint's diagonal entry of the mass
+    matrix; VALUE 0 keeps the type, for an armature set at run time). The header lists the
+    armatures. An option that names no joint, or names one twice, is an error naming it.
   * Inertia policy. Errors: malformed or non-finite numbers, negative mass, malformed XML.
     Warnings on stderr (physically questionable but common data), per URDF link whose inertia
     enters a body and per merged body (for the lumped tensor): principal moments that are not all
@@ -625,7 +627,7 @@ def plane_axes(n):
 
 
 class Body:
-    def __init__(self, index, parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, axis=None,
+    def __init__(self, index, parent, name, joint_name, urdf_joint, kind, placement, joint_type, axis=None,
                  takes_axis=False, link=None):
         self.index, self.parent = index, parent
         self.name = name                # body_names entry
@@ -633,7 +635,8 @@ class Body:
         self.urdf_joint = urdf_joint    # the URDF joint it comes from (None: the floating base)
         self.kind = kind                # a description for comments
         self.placement = placement      # Pose in the parent body's frame (or the world)
-        self.cpp_joint = cpp_joint      # C++ type, fully qualified
+        self.joint_type = joint_type    # C++ type of its joint, fully qualified, without the wrappers below
+        self.aligned = placement.q == IDENTITY_Q  # aligned<...>: its placement does not turn
         self.axis = axis                # the run-time axis, or the axis for comments, or None
         self.takes_axis = takes_axis    # make_link takes the axis
         self.link = link                # the body's own URDF link (None: a planar joint's virtual body)
@@ -643,6 +646,19 @@ class Body:
         self.dofs = 0
         self.turns = False              # its joint turns it (revolute, continuous, a planar joint's rotation)
         self.armature = None            # a 1-dof joint's rotor inertia (--armature, --massless armature=)
+        self.master = None              # a mimic joint's master body
+
+    @property
+    def cpp_joint(self):
+        """The joint's C++ type: mimic<aligned<J>, M>, aligned<with_armature<J>>, or some of them."""
+        t = self.joint_type
+        if self.armature is not None:
+            t = f"ctga::chains::with_armature<{t}>"
+        if self.aligned:
+            t = f"ctga::chains::aligned<{t}>"
+        if self.master is not None:
+            t = f"ctga::chains::mimic<{t}, {self.master}>"
+        return t
 
 
 class Frame:
@@ -724,7 +740,7 @@ def build_tree(links, joints, opts):
         _couple_mimics(model, mimics)
         _mass_properties(model, opts.strict)
         for b in model.bodies:
-            if b.link is not None and b.urdf_joint is not None and b.urdf_joint.name in armatures:
+            if b.dofs == 1 and b.link is not None and b.urdf_joint is not None and b.urdf_joint.name in armatures:
                 b.armature = armatures[b.urdf_joint.name][0]
         failing = massless_joints(model)
         if not failing:
@@ -860,10 +876,8 @@ def _assemble(links, by_name, joint_by_name, root, children, opts, locks):
         taken.add(name)
         return name
 
-    def new_body(parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, **kw):
-        if placement.q == IDENTITY_Q:
-            cpp_joint = f"ctga::chains::aligned<{cpp_joint}>"
-        b = Body(len(bodies), parent, name, joint_name, urdf_joint, kind, placement, cpp_joint, **kw)
+    def new_body(parent, name, joint_name, urdf_joint, kind, placement, joint_type, **kw):
+        b = Body(len(bodies), parent, name, joint_name, urdf_joint, kind, placement, joint_type, **kw)
         bodies.append(b)
         return b
 
@@ -946,7 +960,7 @@ def _couple_mimics(model, mimics):
         if j is None or j.name not in mimics or b.link is None or b.dofs == 0:
             continue
         master = body_of_joint[mimics[j.name].master]
-        b.cpp_joint = f"ctga::chains::mimic<{b.cpp_joint}, {master.index}>"
+        b.master = master.index
         b.coupling = (j.mimic.multiplier, j.mimic.offset)
         b.dofs = 0
 

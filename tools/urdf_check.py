@@ -1,9 +1,12 @@
 #!/usr/bin/env python3
 """Every URDF in a folder through ctga: converted (tools/urdf_to_ctga.py), a checker compiled
 (tools/urdf_check.cpp, -O2) and run, one table row per robot: bodies, frames, degrees of freedom,
-compile time and peak memory of the checker, and the self-consistency of the dynamics (ABA of
-RNEA's τ back to q̈, H q̈ + C = τ, H symmetric positive definite, dE/dt = q̇ᵀτ), or exactly why it
-was refused (the converter's or the compiler's first error).
+compile time and peak memory of the checker, and the self-consistency of the dynamics (ABA's
+backward error RNEA(ABA(τ)) = τ, H q̈ + C = τ, H symmetric positive definite, dE/dt = q̇ᵀτ), with
+ABA's forward error (round_trip: ABA of RNEA's τ back to q̈) and its error against the same model
+in long double (aba_ld) for information: both grow with H's condition number, in any algorithm
+(tools/urdf_check.cpp says how each is measured), or exactly why it was refused (the converter's
+or the compiler's first error).
 
     python3 tools/urdf_check.py FOLDER [--floating-base] [--also-floating] [--options TABLE]
                                 [--exclude PATTERN ...] [--cxx g++] [-- OPTIONS...]
@@ -15,8 +18,8 @@ line that matches it, in order, after those of `--`. tools/urdf_options_erd.txt 
 example-robot-data's collection (the options a user would pick per robot). --exclude skips the
 robots a pattern matches (repeatable; e.g. a file that is not a robot). --also-floating adds a
 second row for each robot converted with --floating-base. Prints a Markdown table; exit status 1
-if any robot was refused or failed a check (tolerances: 1e-10 relative; symmetry 1e-12; the
-joint limits must pass check_limits).
+if any robot was refused or failed a check (tolerances: 1e-12 for the residual and the symmetry,
+1e-10 for the others; the joint limits must pass check_limits).
 
 Standard library only; needs the compiler and /usr/bin/time.
 """
@@ -112,7 +115,7 @@ def main(argv=None):
         if args.also_floating and "--floating-base" not in base:
             runs.append((f, base + ["--floating-base"]))
     cols = ["robot", "options", "result", "bodies", "frames", "nq", "nv", "mimic", "warnings", "compile", "memory",
-            "limits", "round_trip", "split", "spd", "power"]
+            "limits", "round_trip", "residual", "split", "spd", "power", "aba_ld"]
     print("| " + " | ".join(cols) + " |")
     print("|" + " --- |" * len(cols))
     bad = 0

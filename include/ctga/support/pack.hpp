@@ -181,8 +181,10 @@ CTGA_ALWAYS_INLINE void sqrt_register(const T* x, T* out) noexcept {
     else if constexpr (sizeof(v) == 64) r = __builtin_ia32_sqrtps512(v, 4);
     else
 #elif defined(__AVX512F__)
-    if constexpr (sizeof(v) == 64 && is_double) r = __builtin_ia32_sqrtpd512_mask(v, vector{}, 0xff, 4);
-    else if constexpr (sizeof(v) == 64) r = __builtin_ia32_sqrtps512_mask(v, vector{}, 0xffff, 4);
+    // GCC's builtin takes the lane mask as a signed char (8 lanes) or short (16 lanes): all lanes
+    // is -1 (0xff would overflow the conversion, an error under -Werror).
+    if constexpr (sizeof(v) == 64 && is_double) r = __builtin_ia32_sqrtpd512_mask(v, vector{}, -1, 4);
+    else if constexpr (sizeof(v) == 64) r = __builtin_ia32_sqrtps512_mask(v, vector{}, -1, 4);
     else
 #endif
 #if defined(__AVX__)

@@ -147,8 +147,8 @@ public:
             (void)sizeof(detail::target_lacks<Alg, L2.masks[missing]>);
         } else {
             for (std::size_t i = 0; i < L2.size(); ++i) {
-                const int k = Layout.index_of(L2.masks[i]);
-                c_[static_cast<std::size_t>(k)] = L2.signs[i] * Layout.signs[k] > 0 ? x[i] : T(-x[i]);
+                const auto k = static_cast<std::size_t>(Layout.index_of(L2.masks[i]));
+                c_[k] = L2.signs[i] * Layout.signs[k] > 0 ? x[i] : T(-x[i]);
             }
         }
     }

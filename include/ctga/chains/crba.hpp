@@ -239,7 +239,7 @@ struct crba_cost {
         std::size_t c = 0;
         for (std::size_t b = 0; b < Tree::size; ++b) c += 173 + 9 * rotation[b] / 2;
         for (std::size_t k = 0; k < Tree::nv; ++k)
-            for (std::size_t j = 0; j <= k; ++j) c += Tree::supports(Tree::body_of_dof[j], Tree::body_of_dof[k]) ? 12 : 0;
+            for (std::size_t j = 0; j <= k; ++j) c += Tree::supports(Tree::body_of_dof[j], Tree::body_of_dof[k]) ? std::size_t{12} : 0;
         return c;
     }();
     // the world form's loops do less per second than the unrolled transforms (the 30-body aligned

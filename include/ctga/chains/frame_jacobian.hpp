@@ -74,9 +74,9 @@ CTGA_ALWAYS_INLINE constexpr screw<T> moved_out(const motor_map<T>& G, const S& 
     const screw<T> s(sparse);
     vec3<T> w{}, v{};
     if constexpr (rotates)
-        for (int i = 0; i < 3; ++i) w[i] = row_times<0, T, S>(G.R[i], s);
+        for (std::size_t i = 0; i < 3; ++i) w[i] = row_times<0, T, S>(G.R[i], s);
     if constexpr (translates)
-        for (int i = 0; i < 3; ++i) v[i] = row_times<3, T, S>(G.R[i], s);
+        for (std::size_t i = 0; i < 3; ++i) v[i] = row_times<3, T, S>(G.R[i], s);
     if constexpr (rotates) {
         const vec3<T> tw = linear3::cross(G.t, w);
         if constexpr (translates) v = linear3::add(v, tw);
@@ -151,8 +151,8 @@ CTGA_ALWAYS_INLINE constexpr void local_columns(const model<Tree, T>& m, const m
         if constexpr (Tree::parent[j] >= 0) {
             const motor_map<T> Xj = map_of_body(std::integral_constant<std::size_t, j>{});
             motor_map<T> up;  // X Xj⁻¹: R Rjᵀ, t − (R Rjᵀ) tj
-            for (int r = 0; r < 3; ++r)
-                for (int c = 0; c < 3; ++c) up.R[r][c] = X.R[r][0] * Xj.R[c][0] + X.R[r][1] * Xj.R[c][1] + X.R[r][2] * Xj.R[c][2];
+            for (std::size_t r = 0; r < 3; ++r)
+                for (std::size_t c = 0; c < 3; ++c) up.R[r][c] = X.R[r][0] * Xj.R[c][0] + X.R[r][1] * Xj.R[c][1] + X.R[r][2] * Xj.R[c][2];
             const vec3<T> u = linear3::apply(up.R, Xj.t);
             up.t = {X.t[0] - u[0], X.t[1] - u[1], X.t[2] - u[2]};
             local_columns<Tree::parent[j]>(m, up, map_of_body, out);

@@ -92,7 +92,7 @@ CTGA_ALWAYS_INLINE constexpr mat3<T> axis_rotation(const T& c, const T& s) noexc
 template <int K>
 inline constexpr linear3::shape axis_rotation_shape = [] {
     linear3::shape out = linear3::dense;
-    for (int j = 0; j < 3; ++j) {
+    for (std::size_t j = 0; j < 3; ++j) {
         out.e[static_cast<std::size_t>(3 * K + j)] = j == K ? linear3::entry::one : linear3::entry::zero;
         out.e[static_cast<std::size_t>(3 * j + K)] = j == K ? linear3::entry::one : linear3::entry::zero;
     }
@@ -115,8 +115,8 @@ constexpr mat3<T> rodrigues(const vec3<T>& u, const T& c, const T& s) noexcept {
 template <class T>
 constexpr mat3<T> multiply(const mat3<T>& A, const mat3<T>& B) noexcept {
     mat3<T> C{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) C[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) C[i][j] = A[i][0] * B[0][j] + A[i][1] * B[1][j] + A[i][2] * B[2][j];
     return C;
 }
 

@@ -48,7 +48,7 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
         if constexpr (!B::root) f[body.p] = f[body.p] + transform<map_shape<J>>(k.X[i], f[i]);
     });
     // a joint's armature a_k: τ_k += a_k q̈_k (its rotor, reflected onto the joint)
-    each_armature(m, [&](std::size_t k, const T& a) { tau[k] += a * qdd[k]; });
+    each_armature(m, [&](std::size_t dof, const T& a) { tau[dof] += a * qdd[dof]; });
     // a mimic joint's torque r f_i(S_i) goes to its master (τ = Gᵀ τ_all, joints.hpp); f_i is final
     // once body i has passed it on
     if constexpr (Tree::has_mimic)

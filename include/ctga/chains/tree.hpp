@@ -333,8 +333,8 @@ constexpr checked<motor_map<T>> placement_map(const motor<T>& g) noexcept {
 // R = 1 to a few roundings (an aligned joint's placement, joints.hpp).
 template <class T>
 constexpr bool identity_rotation(const mat3<T>& R) noexcept {
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
             const T d = R[i][j] - (i == j ? T(1) : T(0));
             if (!((d < T(0) ? -d : d) <= T(64) * std::numeric_limits<T>::epsilon())) return false;
         }

@@ -59,8 +59,8 @@ template <class T = double>
     if (!is_finite(angle)) return {rotor<T>{}, error_code::non_finite};
     const checked<std::array<T, 3>> u = unit_direction(x, y, z);
     if (!u) return {rotor<T>{}, u.error};
-    const auto half = math::cos_sin(angle / T(2));
-    return {rotor<T>{half.cos, -half.sin * u.value[0], -half.sin * u.value[1], -half.sin * u.value[2]}, error_code::none};
+    const auto cs = math::cos_sin(angle / T(2));  // of half the angle
+    return {rotor<T>{cs.cos, -cs.sin * u.value[0], -cs.sin * u.value[1], -cs.sin * u.value[2]}, error_code::none};
 }
 
 // make_rotor_checked for an axis known to be non-zero and finite (value_or_nan: asserts in debug

@@ -19,6 +19,56 @@
 
 namespace ctga {
 
+// The formulas of body_inertia and body_mobility below, over their ten parameters (leaves of a
+// formula, formula.hpp). At namespace scope: as members their parameters would shadow the fields
+// of the same names.
+namespace body_formulas {
+// N = Σ I_o(i,j) (α_i ε̃_j + α_j ε̃_i)/(1 + δ_ij) + m (a2a3e2e3 + a3a1e3e1 + a1a2e1e2) + Ĥ blocks,
+// entry (i, j) being the blade α_i ε̃_j (detail/matrix_blades.hpp).
+inline constexpr auto inertia = [](auto m, auto hx, auto hy, auto hz, auto ixx, auto iyy, auto izz, auto ixy,
+                                   auto ixz, auto iyz) {
+    using G = cl062;
+    return ixx * G::basis<"a1ae1e"> + iyy * G::basis<"a2ae2e"> + izz * G::basis<"a3ae3e"> +
+           ixy * (G::basis<"a1ae2e"> + G::basis<"a2ae1e">) + ixz * (G::basis<"a1ae3e"> + G::basis<"a3ae1e">) +
+           iyz * (G::basis<"a2ae3e"> + G::basis<"a3ae2e">) +
+           m * (G::basis<"a2a3e2e3"> + G::basis<"a3a1e3e1"> + G::basis<"a1a2e1e2">) +
+           // Ĥ in the upper right, −Ĥ = Ĥᵀ in the lower left
+           hx * (G::basis<"a3ae3e1"> - G::basis<"a2ae1e2"> + G::basis<"a3a1e3e"> - G::basis<"a1a2e2e">) +
+           hy * (G::basis<"a1ae1e2"> - G::basis<"a3ae2e3"> - G::basis<"a2a3e3e"> + G::basis<"a1a2e1e">) +
+           hz * (G::basis<"a2ae2e3"> - G::basis<"a1ae3e1"> + G::basis<"a2a3e2e"> - G::basis<"a3a1e1e">);
+};
+
+// M_c, the mobility about the centre of mass (entry (i, j) is the blade α̃_j ε_i).
+inline constexpr auto mobility_about_centre = [](auto inv_m, auto jxx, auto jyy, auto jzz, auto jxy, auto jxz, auto jyz) {
+    using G = cl062;
+    return jxx * G::basis<"a2a3e2e3"> + jyy * G::basis<"a3a1e3e1"> + jzz * G::basis<"a1a2e1e2"> +
+           jxy * (G::basis<"a3a1e2e3"> + G::basis<"a2a3e3e1">) + jxz * (G::basis<"a1a2e2e3"> + G::basis<"a2a3e1e2">) +
+           jyz * (G::basis<"a1a2e3e1"> + G::basis<"a3a1e1e2">) +
+           inv_m * (G::basis<"a1ae1e"> + G::basis<"a2ae2e"> + G::basis<"a3ae3e">);
+};
+// t = 1 + ½(cx e1e + cy e2e + cz e3e), the translation to the centre of mass (§3), in Cl(0,6,2).
+inline constexpr auto to_centre = [](auto cx, auto cy, auto cz) {
+    using G = cl062;
+    return G::basis<"1"> + half * (cx * G::basis<"e1e"> + cy * G::basis<"e2e"> + cz * G::basis<"e3e">);
+};
+// As an argument of a formula: M = (t t̄) M_c (t t̄)*, the element mobility_of stores.
+inline constexpr auto mobility = [](auto inv_m, auto cx, auto cy, auto cz, auto jxx, auto jyy, auto jzz, auto jxy,
+                                   auto jxz, auto jyz) {
+    // (t t̄) M_c (t t̄)* = t (t̄ M_c t̄*) t*: one sandwich at a time, each fully expanded
+    const auto t = to_centre(cx, cy, cz);
+    return t * (bar(t) * mobility_about_centre(inv_m, jxx, jyy, jzz, jxy, jxz, jyz) * conj(bar(t))) * conj(t);
+};
+// The velocity of a co-screw P, t (E ∨ (M_c ∧ (t̄* P t̄))) t* (24m 18a): as a formula's body
+// (velocity_of, for larger formulas) and as the formula velocity_from(M, P) runs.
+inline constexpr auto velocity_of = [](auto P, auto inv_m, auto cx, auto cy, auto cz, auto jxx, auto jyy, auto jzz,
+                                       auto jxy, auto jxz, auto jyz) {
+    const auto t = to_centre(cx, cy, cz);
+    const auto P_c = conj(bar(t)) * P * bar(t);  // P about the centre of mass: (l − c × p, p)
+    const auto s_c = invariants::E & (mobility_about_centre(inv_m, jxx, jyy, jzz, jxy, jxz, jyz) ^ P_c);  // (J l', p/m)
+    return t * s_c * conj(t);  // (ω, v' + c × ω)
+};
+}  // namespace body_formulas
+
 // A rigid body's N by its ten parameters: the mass m, the first moment h = m c and the inertia
 // tensor about the body origin I_o (six numbers, symmetric). N = [[I_o, Ĥ], [−Ĥ, m 1]] has 24
 // non-zero blades but only ten distinct coefficients: I_o(i, j) and I_o(j, i) are one number, m
@@ -44,22 +94,10 @@ struct body_inertia {
                 a.iyy + b.iyy, a.izz + b.izz, a.ixy + b.ixy, a.ixz + b.ixz, a.iyz + b.iyz};
     }
 
-    // As an argument of a formula (formula.hpp): ten leaves, and N as the expression they make,
-    //   N = Σ I_o(i,j) (α_i ε̃_j + α_j ε̃_i)/(1 + δ_ij) + m (a2a3e2e3 + a3a1e3e1 + a1a2e1e2) + Ĥ blocks,
-    // entry (i, j) being the blade α_i ε̃_j (detail/matrix_blades.hpp).
+    // As an argument of a formula (formula.hpp): ten leaves, and N as the expression they make
+    // (body_formulas::inertia).
     [[nodiscard]] constexpr auto parameters() const noexcept { return std::tie(m, hx, hy, hz, ixx, iyy, izz, ixy, ixz, iyz); }
-    static constexpr auto element = [](auto m, auto hx, auto hy, auto hz, auto ixx, auto iyy, auto izz, auto ixy,
-                                       auto ixz, auto iyz) {
-        using G = cl062;
-        return ixx * G::basis<"a1ae1e"> + iyy * G::basis<"a2ae2e"> + izz * G::basis<"a3ae3e"> +
-               ixy * (G::basis<"a1ae2e"> + G::basis<"a2ae1e">) + ixz * (G::basis<"a1ae3e"> + G::basis<"a3ae1e">) +
-               iyz * (G::basis<"a2ae3e"> + G::basis<"a3ae2e">) +
-               m * (G::basis<"a2a3e2e3"> + G::basis<"a3a1e3e1"> + G::basis<"a1a2e1e2">) +
-               // Ĥ in the upper right, −Ĥ = Ĥᵀ in the lower left
-               hx * (G::basis<"a3ae3e1"> - G::basis<"a2ae1e2"> + G::basis<"a3a1e3e"> - G::basis<"a1a2e2e">) +
-               hy * (G::basis<"a1ae1e2"> - G::basis<"a3ae2e3"> - G::basis<"a2a3e3e"> + G::basis<"a1a2e1e">) +
-               hz * (G::basis<"a2ae2e3"> - G::basis<"a1ae3e1"> + G::basis<"a2a3e2e"> - G::basis<"a3a1e1e">);
-    };
+    static constexpr auto element = body_formulas::inertia;
 };
 
 template <class T>
@@ -102,35 +140,10 @@ struct body_mobility {
     [[nodiscard]] constexpr auto parameters() const noexcept {
         return std::tie(inv_m, cx, cy, cz, jxx, jyy, jzz, jxy, jxz, jyz);
     }
-    // M_c, the mobility about the centre of mass (entry (i, j) is the blade α̃_j ε_i).
-    static constexpr auto about_centre = [](auto inv_m, auto jxx, auto jyy, auto jzz, auto jxy, auto jxz, auto jyz) {
-        using G = cl062;
-        return jxx * G::basis<"a2a3e2e3"> + jyy * G::basis<"a3a1e3e1"> + jzz * G::basis<"a1a2e1e2"> +
-               jxy * (G::basis<"a3a1e2e3"> + G::basis<"a2a3e3e1">) + jxz * (G::basis<"a1a2e2e3"> + G::basis<"a2a3e1e2">) +
-               jyz * (G::basis<"a1a2e3e1"> + G::basis<"a3a1e1e2">) +
-               inv_m * (G::basis<"a1ae1e"> + G::basis<"a2ae2e"> + G::basis<"a3ae3e">);
-    };
-    // t = 1 + ½(cx e1e + cy e2e + cz e3e), the translation to the centre of mass (§3), in Cl(0,6,2).
-    static constexpr auto to_centre = [](auto cx, auto cy, auto cz) {
-        using G = cl062;
-        return G::basis<"1"> + half * (cx * G::basis<"e1e"> + cy * G::basis<"e2e"> + cz * G::basis<"e3e">);
-    };
-    // As an argument of a formula: M = (t t̄) M_c (t t̄)*, the element mobility_of stores.
-    static constexpr auto element = [](auto inv_m, auto cx, auto cy, auto cz, auto jxx, auto jyy, auto jzz, auto jxy,
-                                       auto jxz, auto jyz) {
-        // (t t̄) M_c (t t̄)* = t (t̄ M_c t̄*) t*: one sandwich at a time, each fully expanded
-        const auto t = to_centre(cx, cy, cz);
-        return t * (bar(t) * about_centre(inv_m, jxx, jyy, jzz, jxy, jxz, jyz) * conj(bar(t))) * conj(t);
-    };
-    // The velocity of a co-screw P, t (E ∨ (M_c ∧ (t̄* P t̄))) t* (24m 18a): as a formula's body
-    // (velocity_of, for larger formulas) and as the formula velocity_from(M, P) runs.
-    static constexpr auto velocity_of = [](auto P, auto inv_m, auto cx, auto cy, auto cz, auto jxx, auto jyy, auto jzz,
-                                           auto jxy, auto jxz, auto jyz) {
-        const auto t = to_centre(cx, cy, cz);
-        const auto P_c = conj(bar(t)) * P * bar(t);  // P about the centre of mass: (l − c × p, p)
-        const auto s_c = invariants::E & (about_centre(inv_m, jxx, jyy, jzz, jxy, jxz, jyz) ^ P_c);  // (J l', p/m)
-        return t * s_c * conj(t);  // (ω, v' + c × ω)
-    };
+    static constexpr auto about_centre = body_formulas::mobility_about_centre;
+    static constexpr auto to_centre = body_formulas::to_centre;
+    static constexpr auto element = body_formulas::mobility;
+    static constexpr auto velocity_of = body_formulas::velocity_of;
     static constexpr auto velocity = formula(velocity_of);
 };
 

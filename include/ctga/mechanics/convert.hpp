@@ -62,8 +62,8 @@ template <class T>
 [[nodiscard]] constexpr homogeneous_matrix<T> to_homogeneous(const motor<T>& g) noexcept {
     const motor_map<T> G = map_of(g);
     homogeneous_matrix<T> m{};
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) m[i][j] = G.R[i][j];
+    for (std::size_t i = 0; i < 3; ++i) {
+        for (std::size_t j = 0; j < 3; ++j) m[i][j] = G.R[i][j];
         m[i][3] = G.t[i];
     }
     m[3][3] = T(1);
@@ -92,8 +92,8 @@ template <class T>
     const auto off = [](const T& v) { return v < T(0) ? -v : v; };
     if (off(m[3][0]) > tol || off(m[3][1]) > tol || off(m[3][2]) > tol || off(m[3][3] - T(1)) > tol)
         return {motor<T>{}, error_code::not_homogeneous};
-    for (int i = 0; i < 3; ++i)
-        for (int j = i; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i; j < 3; ++j) {
             const T rtr = m[0][i] * m[0][j] + m[1][i] * m[1][j] + m[2][i] * m[2][j];
             if (off(rtr - (i == j ? T(1) : T(0))) > tol) return {motor<T>{}, error_code::not_a_rotation};
         }

@@ -44,15 +44,15 @@ template <class T>
     const vec3<T> h{m * c[0], m * c[1], m * c[2]};  // first moment m c
     mat6<T> N{};
     const mat3<T> I_o = inertia_about_origin(b, h);  // I_c − m Ĉ²
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) N[i][j] = I_o[i][j];
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) N[i][j] = I_o[i][j];
     const mat3<T> H = linear3::hat(h);
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
             N[i][3 + j] = H[i][j];   // m Ĉ
             N[3 + i][j] = -H[i][j];  // m Ĉᵀ = −m Ĉ
         }
-    for (int i = 0; i < 3; ++i) N[3 + i][3 + i] = m;
+    for (std::size_t i = 0; i < 3; ++i) N[3 + i][3 + i] = m;
     return matrix_blades::from_matrix<false, rigid_inertia<T>>(N);
 }
 
@@ -62,12 +62,12 @@ template <class T>
     const mat3<T> J = linear3::inverse_symmetric(b.inertia_c);
     const mat3<T> C = linear3::hat(b.com);
     mat3<T> CJ{};  // Ĉ J
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) CJ[i][j] = C[i][0] * J[0][j] + C[i][1] * J[1][j] + C[i][2] * J[2][j];
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) CJ[i][j] = C[i][0] * J[0][j] + C[i][1] * J[1][j] + C[i][2] * J[2][j];
     mat6<T> M{};
     const T inv_m = T(1) / b.mass;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
             M[i][j] = J[i][j];
             M[3 + i][j] = CJ[i][j];
             M[i][3 + j] = CJ[j][i];  // −J Ĉ = (Ĉ J)ᵀ

@@ -44,8 +44,8 @@ template <class T, auto L>
     const T tol = T(64) * std::numeric_limits<T>::epsilon() *
                   (inertia_detail::abs(n[0][0]) + inertia_detail::abs(n[1][1]) + inertia_detail::abs(n[2][2]) + inertia_detail::abs(m));
     bool rigid = true;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) {
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
             rigid = rigid && inertia_detail::abs(n[3 + i][3 + j] - (i == j ? m : T(0))) <= tol;
             rigid = rigid && inertia_detail::abs(n[i][3 + j] + n[3 + i][j]) <= tol;
             rigid = rigid && inertia_detail::abs(n[i][3 + j] + n[j][3 + i]) <= tol;
@@ -55,8 +55,8 @@ template <class T, auto L>
     if (!rigid) return {{}, error_code::not_a_rigid_inertia};
     const vec3<T> c{n[2][4] / m, n[0][5] / m, n[1][3] / m};  // m Ĉ = [[0, −m cz, m cy], [m cz, 0, −m cx], …]
     mat3<T> Ic{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) Ic[i][j] = n[i][j] - m * ((i == j ? linear3::dot(c, c) : T(0)) - c[i] * c[j]);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) Ic[i][j] = n[i][j] - m * ((i == j ? linear3::dot(c, c) : T(0)) - c[i] * c[j]);
     return make_mass_properties(m, c, Ic);
 }
 

@@ -101,25 +101,25 @@ namespace transform_detail {
 template <class T>
 constexpr mat6<T> congruence(const motor_map<T>& G, const mat6<T>& X) noexcept {
     mat6<T> Y{};
-    for (int bi = 0; bi < 2; ++bi)
-        for (int bj = 0; bj < 2; ++bj) {
+    for (std::size_t bi = 0; bi < 2; ++bi)
+        for (std::size_t bj = 0; bj < 2; ++bj) {
             mat3<T> RB{};  // R B
-            for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j)
+            for (std::size_t i = 0; i < 3; ++i)
+                for (std::size_t j = 0; j < 3; ++j)
                     RB[i][j] = G.R[i][0] * X[3 * bi][3 * bj + j] + G.R[i][1] * X[3 * bi + 1][3 * bj + j] +
                                G.R[i][2] * X[3 * bi + 2][3 * bj + j];
-            for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j) Y[3 * bi + i][3 * bj + j] = linear3::dot(RB[i], G.R[j]);  // (R B) Rᵀ
+            for (std::size_t i = 0; i < 3; ++i)
+                for (std::size_t j = 0; j < 3; ++j) Y[3 * bi + i][3 * bj + j] = linear3::dot(RB[i], G.R[j]);  // (R B) Rᵀ
         }
     // rows: [A; C] ↦ [A; T A + C] (left multiplication by S)
-    for (int j = 0; j < 6; ++j) {
+    for (std::size_t j = 0; j < 6; ++j) {
         const vec3<T> tc = linear3::cross(G.t, vec3<T>{Y[0][j], Y[1][j], Y[2][j]});
-        for (int i = 0; i < 3; ++i) Y[3 + i][j] += tc[i];
+        for (std::size_t i = 0; i < 3; ++i) Y[3 + i][j] += tc[i];
     }
     // columns: [A B] ↦ [A, A Tᵀ + B] (right multiplication by Sᵀ); row x ↦ x Tᵀ = (T xᵀ)ᵀ = t × x
-    for (int i = 0; i < 6; ++i) {
+    for (std::size_t i = 0; i < 6; ++i) {
         const vec3<T> tr = linear3::cross(G.t, vec3<T>{Y[i][0], Y[i][1], Y[i][2]});
-        for (int j = 0; j < 3; ++j) Y[i][3 + j] += tr[j];
+        for (std::size_t j = 0; j < 3; ++j) Y[i][3 + j] += tr[j];
     }
     return Y;
 }
@@ -128,8 +128,8 @@ constexpr mat6<T> congruence(const motor_map<T>& G, const mat6<T>& X) noexcept {
 template <class T>
 constexpr mat6<T> swap_halves(const mat6<T>& X) noexcept {
     mat6<T> Y{};
-    for (int i = 0; i < 6; ++i)
-        for (int j = 0; j < 6; ++j) Y[i][j] = X[(i + 3) % 6][(j + 3) % 6];
+    for (std::size_t i = 0; i < 6; ++i)
+        for (std::size_t j = 0; j < 6; ++j) Y[i][j] = X[(i + 3) % 6][(j + 3) % 6];
     return Y;
 }
 

@@ -39,7 +39,7 @@ template <class T>
 enum class entry : unsigned char { zero, one, any };
 struct shape {
     std::array<entry, 9> e;  // row-major
-    [[nodiscard]] constexpr entry at(int row, int col) const noexcept { return e[static_cast<std::size_t>(3 * row + col)]; }
+    [[nodiscard]] constexpr entry at(std::size_t row, std::size_t col) const noexcept { return e[3 * row + col]; }
 };
 inline constexpr shape dense{{entry::any, entry::any, entry::any, entry::any, entry::any, entry::any, entry::any, entry::any, entry::any}};
 inline constexpr shape identity{{entry::one, entry::zero, entry::zero, entry::zero, entry::one, entry::zero, entry::zero, entry::zero, entry::one}};
@@ -74,11 +74,11 @@ constexpr T row_sum(const mat3<T>& m, const vec3<T>& x, const Sum& sum) noexcept
 // coordinate axis: 6; the identity: 0).
 [[nodiscard]] constexpr std::size_t apply_cost(const shape& S) noexcept {
     std::size_t c = 0;
-    for (int r = 0; r < 3; ++r) {
+    for (std::size_t r = 0; r < 3; ++r) {
         std::size_t nonzero = 0;
-        for (int j = 0; j < 3; ++j) {
-            nonzero += S.at(r, j) != entry::zero ? 1 : 0;
-            c += S.at(r, j) == entry::any ? 1 : 0;
+        for (std::size_t j = 0; j < 3; ++j) {
+            nonzero += S.at(r, j) != entry::zero ? std::size_t{1} : 0;
+            c += S.at(r, j) == entry::any ? std::size_t{1} : 0;
         }
         c += nonzero > 0 ? nonzero - 1 : 0;
     }
@@ -113,10 +113,10 @@ template <shape S = dense, class T>
 template <class T>
 [[nodiscard]] constexpr mat3<T> rotate_symmetric(const mat3<T>& R, const mat3<T>& S) noexcept {
     mat3<T> RS{};
-    for (int i = 0; i < 3; ++i) RS[i] = apply_transposed(S, R[i]);  // row i of R S (S = Sᵀ)
+    for (std::size_t i = 0; i < 3; ++i) RS[i] = apply_transposed(S, R[i]);  // row i of R S (S = Sᵀ)
     mat3<T> out{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = i; j < 3; ++j) out[i][j] = out[j][i] = dot(RS[i], R[j]);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i; j < 3; ++j) out[i][j] = out[j][i] = dot(RS[i], R[j]);
     return out;
 }
 // Ĉ, the antisymmetric matrix with Ĉ x = c × x (§2).

@@ -64,8 +64,8 @@ constexpr error_code check_as_given(const T& m, const vec3<T>& c, const mat3<T>&
     if (!all_finite(m, c[0], c[1], c[2])) return error_code::non_finite;
     if (m < T(0)) return error_code::non_positive_mass;
     const T tol = tolerance(I);
-    for (int i = 0; i < 3; ++i)
-        for (int j = i + 1; j < 3; ++j)
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i + 1; j < 3; ++j)
             if (abs(I[i][j] - I[j][i]) > tol) return error_code::not_symmetric;
     return error_code::none;
 }
@@ -83,13 +83,13 @@ constexpr error_code check(const T& m, const vec3<T>& c, const mat3<T>& I) noexc
     // triangle inequalities: Σ = ½ tr(I)·1 − I positive semi-definite, i.e. every principal minor ≥ 0
     const T half_trace = (I[0][0] + I[1][1] + I[2][2]) / T(2);
     mat3<T> S{};
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) S[i][j] = (i == j ? half_trace : T(0)) - I[i][j];
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) S[i][j] = (i == j ? half_trace : T(0)) - I[i][j];
     const T t2 = tol * half_trace, t3 = t2 * half_trace;
-    for (int i = 0; i < 3; ++i)
+    for (std::size_t i = 0; i < 3; ++i)
         if (S[i][i] < -tol) return error_code::triangle_inequality;
-    for (int i = 0; i < 3; ++i)
-        for (int j = i + 1; j < 3; ++j)
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i + 1; j < 3; ++j)
             if (S[i][i] * S[j][j] - S[i][j] * S[i][j] < -t2) return error_code::triangle_inequality;
     const T det_s = S[0][0] * (S[1][1] * S[2][2] - S[1][2] * S[1][2]) - S[0][1] * (S[0][1] * S[2][2] - S[1][2] * S[0][2]) +
                     S[0][2] * (S[0][1] * S[1][2] - S[1][1] * S[0][2]);
@@ -115,8 +115,8 @@ template <class T>
     if (e != error_code::none) return {{}, e};
     mass_properties<T> out{mass, com, inertia_c};
     // symmetrise what the check accepted as symmetric to rounding
-    for (int i = 0; i < 3; ++i)
-        for (int j = i + 1; j < 3; ++j) out.inertia_c[i][j] = out.inertia_c[j][i] = (inertia_c[i][j] + inertia_c[j][i]) / T(2);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = i + 1; j < 3; ++j) out.inertia_c[i][j] = out.inertia_c[j][i] = (inertia_c[i][j] + inertia_c[j][i]) / T(2);
     return {out, error_code::none};
 }
 

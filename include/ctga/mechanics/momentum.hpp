@@ -92,15 +92,15 @@ struct inertia_rate_t : inertia_detail::inertia_rate_operation {
         const mat3<T> I = N.inertia_o();
         const vec3<T> hdot = linear3::add(linear3::cross(w, h), vec3<T>{m * u[0], m * u[1], m * u[2]});
         mat3<T> A;  // A(i, j) = (ω × I_j)_i, I_j the columns of I
-        for (int i = 0; i < 3; ++i) {
-            const int a = (i + 1) % 3, b = (i + 2) % 3;
-            for (int j = 0; j < 3; ++j) A[i][j] = w[a] * I[b][j] - w[b] * I[a][j];
+        for (std::size_t i = 0; i < 3; ++i) {
+            const std::size_t a = (i + 1) % 3, b = (i + 2) % 3;
+            for (std::size_t j = 0; j < 3; ++j) A[i][j] = w[a] * I[b][j] - w[b] * I[a][j];
         }
         const T hu2 = T(2) * linear3::dot(h, u);
         mat3<T> R;
-        for (int i = 0; i < 3; ++i) {
+        for (std::size_t i = 0; i < 3; ++i) {
             R[i][i] = T(2) * (A[i][i] - u[i] * h[i]) + hu2;
-            for (int j = i + 1; j < 3; ++j) R[i][j] = A[i][j] + A[j][i] - (u[i] * h[j] + h[i] * u[j]);
+            for (std::size_t j = i + 1; j < 3; ++j) R[i][j] = A[i][j] + A[j][i] - (u[i] * h[j] + h[i] * u[j]);
         }
         return {sc{T(0)},     sc{hdot[0]},  sc{hdot[1]},  sc{hdot[2]},  sc{R[0][0]},
                 sc{R[1][1]},  sc{R[2][2]},  sc{R[0][1]},  sc{R[0][2]},  sc{R[1][2]}};

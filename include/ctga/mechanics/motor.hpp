@@ -48,8 +48,8 @@ template <class T>
     if (!is_finite(theta)) return {rotor<T>{}, error_code::non_finite};
     const checked<std::array<T, 3>> u = unit_direction(x, y, z);
     if (!u) return {rotor<T>{}, u.error};
-    const auto half = math::cos_sin(theta / T(2));
-    return {rotor<T>{half.cos, half.sin * u.value[0], half.sin * u.value[1], half.sin * u.value[2]}, error_code::none};
+    const auto cs = math::cos_sin(theta / T(2));  // of half the angle
+    return {rotor<T>{cs.cos, cs.sin * u.value[0], cs.sin * u.value[1], cs.sin * u.value[2]}, error_code::none};
 }
 
 // make_rotor_checked for an axis known to be finite and non-zero (value_or_nan: asserts in debug
@@ -143,11 +143,11 @@ namespace renormalize_detail {
 template <class T>
 [[nodiscard]] constexpr std::array<T, 8> scaled(const motor<T>& g, const T& m) noexcept {
     std::array<T, 8> x;
-    for (int i = 0; i < 8; ++i) x[i] = g[i] / m;  // the result is invariant under g → λg, λ > 0
+    for (std::size_t i = 0; i < 8; ++i) x[i] = g[i] / m;  // the result is invariant under g → λg, λ > 0
     const T n = math::sqrt(x[0] * x[0] + x[1] * x[1] + x[2] * x[2] + x[3] * x[3]);  // in [1, 2]
-    for (int i = 0; i < 8; ++i) x[i] /= n;  // α̂ and β/|α|
+    for (std::size_t i = 0; i < 8; ++i) x[i] /= n;  // α̂ and β/|α|
     const T d = x[0] * x[4] + x[1] * x[5] + x[2] * x[6] + x[3] * x[7];  // α̂·β/|α|
-    for (int i = 0; i < 4; ++i) x[4 + i] -= d * x[i];
+    for (std::size_t i = 0; i < 4; ++i) x[4 + i] -= d * x[i];
     return x;
 }
 // Packs, lane by lane: the renormalised motor (NaN in a lane that has a NaN or ∞, or α = 0) and
@@ -161,8 +161,8 @@ template <lane_wise T>
 [[nodiscard]] CTGA_ALWAYS_INLINE constexpr lanes_renormalized<T> in_lanes(const motor<T>& g) noexcept {
     T m = T(0);
     auto finite = finite_lanes(g[0]);
-    for (int i = 0; i < 8; ++i) finite = finite && finite_lanes(g[i]);
-    for (int i = 0; i < 4; ++i) m = select(abs(g[i]) > m, abs(g[i]), m);
+    for (std::size_t i = 0; i < 8; ++i) finite = finite && finite_lanes(g[i]);
+    for (std::size_t i = 0; i < 4; ++i) m = select(abs(g[i]) > m, abs(g[i]), m);
     const auto rotor = m > T(0);
     const T nan(std::numeric_limits<typename T::value_type>::quiet_NaN());
     const auto x = scaled(g, select(finite && rotor, m, nan));
@@ -183,7 +183,7 @@ template <class T>
     } else {
         if (!all_finite(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7])) return {motor<T>{}, error_code::non_finite};
         T m = T(0);
-        for (int i = 0; i < 4; ++i) {
+        for (std::size_t i = 0; i < 4; ++i) {
             const T a = g[i] < T(0) ? -g[i] : g[i];
             if (a > m) m = a;
         }
@@ -242,7 +242,7 @@ template <class T>
 template <linear3::shape S = linear3::dense, class T>
 [[nodiscard]] constexpr motor_map<T> compose(const motor_map<T>& A, const motor_map<T>& B) noexcept {
     motor_map<T> out;
-    for (int i = 0; i < 3; ++i) out.R[i] = linear3::apply_transposed<S>(B.R, A.R[i]);
+    for (std::size_t i = 0; i < 3; ++i) out.R[i] = linear3::apply_transposed<S>(B.R, A.R[i]);
     out.t = linear3::add(linear3::apply(A.R, B.t), A.t);
     return out;
 }
@@ -251,9 +251,9 @@ template <linear3::shape S = linear3::dense, class T>
 template <class T>
 [[nodiscard]] constexpr motor_map<T> inverse(const motor_map<T>& G) noexcept {
     motor_map<T> out;
-    for (int i = 0; i < 3; ++i)
-        for (int j = 0; j < 3; ++j) out.R[i][j] = G.R[j][i];
-    for (int i = 0; i < 3; ++i) out.t[i] = -(out.R[i][0] * G.t[0] + out.R[i][1] * G.t[1] + out.R[i][2] * G.t[2]);
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) out.R[i][j] = G.R[j][i];
+    for (std::size_t i = 0; i < 3; ++i) out.t[i] = -(out.R[i][0] * G.t[0] + out.R[i][1] * G.t[1] + out.R[i][2] * G.t[2]);
     return out;
 }
 

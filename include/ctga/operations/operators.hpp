@@ -98,8 +98,8 @@ template <int... Images, operand X>
         constexpr bool permutation = [&] {
             std::array<bool, alg::dimension> hit{};
             for (int p : perm) {
-                if (p < 0 || p >= static_cast<int>(alg::dimension) || hit[p]) return false;
-                hit[p] = true;
+                if (p < 0 || p >= static_cast<int>(alg::dimension) || hit[static_cast<std::size_t>(p)]) return false;
+                hit[static_cast<std::size_t>(p)] = true;
             }
             return true;
         }();
@@ -107,7 +107,7 @@ template <int... Images, operand X>
         constexpr bool squares_kept = [&] {
             if (!permutation) return true;
             for (std::size_t i = 0; i < alg::dimension; ++i)
-                if (alg::squares[i] != alg::squares[perm[i]]) return false;
+                if (alg::squares[i] != alg::squares[static_cast<std::size_t>(perm[i])]) return false;
             return true;
         }();
         static_assert(squares_kept, "ctga: the automorphism maps a generator to one with a different square");

@@ -190,7 +190,7 @@ struct scene_model<springs<Springs...>, Models...> {
                     b = scene_detail::point_of<T>(boost::hana::at_c<sp::second>(g.parts), boost::hana::at_c<sp::second>(s.parts),
                                                   spring.at_second);
                 vec3<T> f{};
-                for (int i = 0; i < 3; ++i)
+                for (std::size_t i = 0; i < 3; ++i)
                     f[i] = spring.stiffness * (b.p[i] - a.p[i]) + spring.damping * (b.v[i] - a.v[i]);
                 if constexpr (sp::first == B) {
                     total = coscrew<T>(total + scene_detail::wrench_at(g1, spring.at_first, f));

@@ -25,6 +25,7 @@
 #include <boost/hana/tuple.hpp>
 
 #include "ctga/algebra/fixed_string.hpp"
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/joints.hpp"
 #include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/mass_properties.hpp"
@@ -212,7 +213,8 @@ template <class... E>
 inline constexpr bool is_tree<tree<E...>> = true;
 
 // A frame named at compile time: frame_pose(m, k, chains::frame<"tool0">). A name the tree does
-// not have is a compile error (frame_index, whose instantiation shows the name).
+// not have is a compile error naming it: the_tree_has_no_frame_named<'t', 'o', 'o', 'l', '9'>
+// (arguments.hpp).
 template <fixed_string Name>
 struct frame_name {
     static constexpr fixed_string name = Name;
@@ -223,8 +225,7 @@ inline constexpr frame_name<Name> frame{};
 template <class Tree, fixed_string Name>
 consteval std::size_t frame_index() {
     constexpr std::size_t k = Tree::frame_index_of(Name.view());
-    static_assert(k < Tree::frame_count, "ctga::chains::frame: the tree has no frame of this name (the name is the "
-                                         "template argument of this frame_index)");
+    if constexpr (k == Tree::frame_count) (void)spelt<the_tree_has_no_frame_named, Name>{};
     return k;
 }
 

@@ -60,8 +60,9 @@ struct frame_on<Tree, std::integral_constant<std::size_t, I>> {
 };
 template <class Tree, fixed_string Name>
 struct frame_on<Tree, frame_name<Name>> {
-    static constexpr std::size_t index = frame_index<Tree, Name>();
+    static constexpr std::size_t index = Tree::frame_index_of(Name.view());
     static constexpr int body = index < Tree::frame_count ? Tree::frame_body[index] : -1;  // (no second error)
+    static_assert(sizeof(tree_detail::frame_named<Tree, Name>));  // the name checked apart from the index (why: tree.hpp)
     static constexpr bool placed = true;
 };
 template <class Tree, std::size_t K>

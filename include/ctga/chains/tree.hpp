@@ -222,11 +222,19 @@ struct frame_name {
 template <fixed_string Name>
 inline constexpr frame_name<Name> frame{};
 
+namespace tree_detail {
+// A type whose size is asked where frame Name is looked up (static_assert(sizeof(…))): a class
+// whose instantiation reports the name when the tree has no such frame. Apart from computing the
+// index, so that Clang reports the name once, not again for every constant computed from it.
+template <class Tree, fixed_string Name>
+using frame_named = std::conditional_t<(Tree::frame_index_of(Name.view()) < Tree::frame_count), std::true_type,
+                                       spelt<the_tree_has_no_frame_named, Name>>;
+}  // namespace tree_detail
+
 template <class Tree, fixed_string Name>
 consteval std::size_t frame_index() {
-    constexpr std::size_t k = Tree::frame_index_of(Name.view());
-    if constexpr (k == Tree::frame_count) (void)spelt<the_tree_has_no_frame_named, Name>{};
-    return k;
+    static_assert(sizeof(tree_detail::frame_named<Tree, Name>));
+    return Tree::frame_index_of(Name.view());
 }
 
 namespace tree_detail {

@@ -1,6 +1,8 @@
 // The paper's momentum and Lie bracket compiled two ways: through ctga, and hand-written on 6-vectors
 // (ω, v) / (l, p) with the 6×6 inertia of §2. check.sh counts the instructions of each function
-// in the object file (objdump) and requires ctga's within 1.5× of the hand-written code.
+// in the object file (objdump) and requires ctga's within 1.5× of the hand-written code. And RNEA
+// called through its algorithm object (chains/arguments.hpp) and through its overload set, whose
+// counts must be equal: the object adds nothing to a call.
 #include <ctga/ctga.hpp>
 
 using G = ctga::cl062;
@@ -41,5 +43,19 @@ extern "C" {
     r[3] = a[1] * b[5] - a[2] * b[4] - (b[1] * a[5] - b[2] * a[4]);
     r[4] = a[2] * b[3] - a[0] * b[5] - (b[2] * a[3] - b[0] * a[5]);
     r[5] = a[0] * b[4] - a[1] * b[3] - (b[0] * a[4] - b[1] * a[3]);
+}
+
+// on an arm of three revolute joints
+using arm = ctga::chains::tree<ctga::chains::link<-1, ctga::chains::revolute_z>, ctga::chains::link<0, ctga::chains::revolute_y>,
+                               ctga::chains::link<1, ctga::chains::revolute_y>>;
+using arm_vector = ctga::chains::joint_vector<arm>;
+
+[[gnu::noinline]] void object_rnea(const ctga::chains::model<arm>& m, const arm_vector& q, const arm_vector& qd,
+                                   const arm_vector& qdd, arm_vector& tau) {
+    tau = ctga::chains::rnea(m, q, qd, qdd);
+}
+[[gnu::noinline]] void overloads_rnea(const ctga::chains::model<arm>& m, const arm_vector& q, const arm_vector& qd,
+                                      const arm_vector& qdd, arm_vector& tau) {
+    tau = ctga::chains::rnea_t{}(m, q, qd, qdd);
 }
 }

@@ -66,12 +66,11 @@ constexpr auto blade_name_string() {
     return s;
 }
 
-// Instantiated only to report a blade the target type cannot hold. The blade's name is spelt
-// out as the template arguments, which both GCC and Clang print character by character:
-//   target_type_lacks_blade<'e', '1', 'e', '2', 'e', '3', 'e'>
+// Instantiated only to report a blade the target type cannot hold, its name spelt out
+// (fixed_string.hpp): target_type_lacks_blade<'e', '1', 'e', '2', 'e', '3', 'e'>
 template <char... Name>
 struct target_type_lacks_blade {
-    static_assert(sizeof...(Name) == 0,
+    static_assert(reported<target_type_lacks_blade>,
                   "ctga: the target multivector type lacks a blade the source can make non-zero "
                   "(named in target_type_lacks_blade<...>). If an operand appears twice, as R in "
                   "R * x * reverse(R), each appearance is a leaf of its own and the terms that cancel "
@@ -79,12 +78,8 @@ struct target_type_lacks_blade {
                   "Otherwise add the blade to the type, or drop it on purpose with ctga::project");
 };
 
-template <fixed_string Name, std::size_t... I>
-auto lacking_blade_report(std::index_sequence<I...>) -> target_type_lacks_blade<Name.chars[I]...>;
-
 template <class Alg, blade_mask M>
-using target_lacks = decltype(lacking_blade_report<blade_name_string<Alg, M>()>(
-    std::make_index_sequence<Alg::blade_name_size(M)>{}));
+using target_lacks = spelt<target_type_lacks_blade, blade_name_string<Alg, M>()>;
 
 // First blade of From that To lacks, as an index into From, or −1.
 template <auto From, auto To>

@@ -21,6 +21,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/rnea.hpp"
@@ -179,6 +180,6 @@ struct aba_t {
         return algorithm_detail::aba(m, q, qd, tau, &f_ext);
     }
 };
-inline constexpr aba_t aba{};
+inline constexpr algorithm<aba_t, "aba"> aba{};
 
 }  // namespace ctga::chains

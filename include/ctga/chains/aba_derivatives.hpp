@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "ctga/chains/aba.hpp"
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/minverse.hpp"
 #include "ctga/chains/rnea_derivatives.hpp"
 #include "ctga/chains/tree_matrix.hpp"
@@ -117,6 +118,6 @@ private:
     }
 };
 // The derivatives of q̈ = aba(m, q, q̇, τ[, f_ext]) with q̈ itself: aba_partials.
-inline constexpr aba_derivatives_t aba_derivatives{};
+inline constexpr algorithm<aba_derivatives_t, "aba_derivatives"> aba_derivatives{};
 
 }  // namespace ctga::chains

@@ -17,7 +17,9 @@
 //   floating_base.hpp       a floating base's pose and velocity to and from ROS's / Pinocchio's numbers
 //   checked_call.hpp        checked_call: any of them on checked inputs, with its result checked
 //
-// What they share (configuration, joint vectors, kinematics, the forward pass) is passes.hpp.
+// What they read (configuration, joint vectors, wrenches) and what a wrong call says is
+// arguments.hpp: each is an object algorithm<overloads, "name">, called as a function. What they
+// share (kinematics, the forward pass) is passes.hpp.
 #pragma once
 
 #include "ctga/chains/aba.hpp"

@@ -15,6 +15,7 @@
 #include <array>
 #include <cstddef>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
@@ -84,7 +85,7 @@ struct center_of_mass_t {
         return out;
     }
 };
-inline constexpr center_of_mass_t center_of_mass{};
+inline constexpr algorithm<center_of_mass_t, "center_of_mass"> center_of_mass{};
 
 struct subtree_centers_of_mass_t {
     // For each body, the mass and centre of mass of it and everything it carries (k: poses).
@@ -99,7 +100,7 @@ struct subtree_centers_of_mass_t {
         return out;
     }
 };
-inline constexpr subtree_centers_of_mass_t subtree_centers_of_mass{};
+inline constexpr algorithm<subtree_centers_of_mass_t, "subtree_centers_of_mass"> subtree_centers_of_mass{};
 
 template <class Tree, class T = double>
 using center_of_mass_jacobian_matrix = std::array<vec3<T>, Tree::nv>;  // column k: ċ per unit q̇_k, world
@@ -148,6 +149,6 @@ private:
         return screw<T>{T(0), T(0), T(0), x[0], x[1], x[2]};
     }
 };
-inline constexpr center_of_mass_jacobian_t center_of_mass_jacobian{};
+inline constexpr algorithm<center_of_mass_jacobian_t, "center_of_mass_jacobian"> center_of_mass_jacobian{};
 
 }  // namespace ctga::chains

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/center_of_mass.hpp"
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/passes.hpp"
@@ -49,7 +50,7 @@ struct centroidal_momentum_t {
         return centroidal_detail::about(h, center_of_mass(m, k).position);
     }
 };
-inline constexpr centroidal_momentum_t centroidal_momentum{};
+inline constexpr algorithm<centroidal_momentum_t, "centroidal_momentum"> centroidal_momentum{};
 
 struct centroidal_momentum_matrix_t {
     // A_G with h_G = A_G q̇ (k: forward_kinematics(m, q)).
@@ -87,6 +88,6 @@ struct centroidal_momentum_matrix_t {
         return (*this)(m, forward_kinematics(m, q));
     }
 };
-inline constexpr centroidal_momentum_matrix_t centroidal_momentum_matrix{};
+inline constexpr algorithm<centroidal_momentum_matrix_t, "centroidal_momentum_matrix"> centroidal_momentum_matrix{};
 
 }  // namespace ctga::chains

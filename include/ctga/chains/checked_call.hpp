@@ -145,8 +145,9 @@ template <class Tree, class T>
 // The algorithm's result and why it is not acceptable, if it is not (see the top of the file).
 // With packs (ctga::pack as T) each lane is checked on its own: the error is a lane_errors, the
 // algorithm runs on every lane, and a failed lane's numbers are meaningless, the others' valid.
-template <class Algorithm, class Tree, class T, class... Args>
-[[nodiscard]] constexpr auto checked_call(const Algorithm& algorithm, const model<Tree, T>& m, const configuration<Tree, T>& q,
+// (q is deduced as it is given, so that an algorithm that does not take it says why: arguments.hpp.)
+template <class Algorithm, class Tree, class T, class Q, class... Args>
+[[nodiscard]] constexpr auto checked_call(const Algorithm& algorithm, const model<Tree, T>& m, const Q& q,
                                           const Args&... args) noexcept
     -> checked<decltype(algorithm(m, q, args...)), error_of_t<T>> {
     using namespace algorithm_detail;

@@ -21,6 +21,7 @@
 #include <numbers>
 #include <random>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/joint_limits.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
@@ -53,44 +54,53 @@ constexpr void put(const X& x, std::size_t n, T* out) noexcept {
 }
 }  // namespace configuration_detail
 
-// q ⊕ v: a 1-dof joint's q + v, a floating joint's g exp(v).
-template <class Tree, class T>
-[[nodiscard]] constexpr configuration<Tree, T> integrate(const model<Tree, T>&, const configuration<Tree, T>& q,
-                                                         const joint_vector<Tree, T>& v) noexcept {
-    using namespace configuration_detail;
-    configuration<Tree, T> out{};
-    each_joint<Tree>([&](auto joint, std::size_t qo, std::size_t vo) {
-        using J = decltype(joint);
-        if constexpr (J::nq == 8) put(motor<T>(motor_at(&q[qo]) * ctga::exp(screw_at(&v[vo]))), 8, &out[qo]);
-        else if constexpr (J::nq == 1) out[qo] = q[qo] + v[vo];
-    });
-    return out;
-}
+struct integrate_t {
+    // q ⊕ v: a 1-dof joint's q + v, a floating joint's g exp(v).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr configuration<Tree, T> operator()(const model<Tree, T>&, const configuration<Tree, T>& q,
+                                                              const joint_vector<Tree, T>& v) const noexcept {
+        using namespace configuration_detail;
+        configuration<Tree, T> out{};
+        each_joint<Tree>([&](auto joint, std::size_t qo, std::size_t vo) {
+            using J = decltype(joint);
+            if constexpr (J::nq == 8) put(motor<T>(motor_at(&q[qo]) * ctga::exp(screw_at(&v[vo]))), 8, &out[qo]);
+            else if constexpr (J::nq == 1) out[qo] = q[qo] + v[vo];
+        });
+        return out;
+    }
+};
+inline constexpr algorithm<integrate_t, "integrate"> integrate{};
 
-// q₁ ⊖ q₀, the v with integrate(m, q₀, v) = q₁: a 1-dof joint's q₁ − q₀, a floating joint's
-// log(g₀* g₁) (the shorter way round: a turn by at most π).
-template <class Tree, class T>
-[[nodiscard]] constexpr joint_vector<Tree, T> difference(const model<Tree, T>&, const configuration<Tree, T>& q0,
-                                                         const configuration<Tree, T>& q1) noexcept {
-    using namespace configuration_detail;
-    joint_vector<Tree, T> out{};
-    each_joint<Tree>([&](auto joint, std::size_t qo, std::size_t vo) {
-        using J = decltype(joint);
-        if constexpr (J::nq == 8) put(ctga::log(motor<T>(inverse(motor_at(&q0[qo])) * motor_at(&q1[qo]))), 6, &out[vo]);
-        else if constexpr (J::nq == 1) out[vo] = q1[qo] - q0[qo];
-    });
-    return out;
-}
+struct difference_t {
+    // q₁ ⊖ q₀, the v with integrate(m, q₀, v) = q₁: a 1-dof joint's q₁ − q₀, a floating joint's
+    // log(g₀* g₁) (the shorter way round: a turn by at most π).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr joint_vector<Tree, T> operator()(const model<Tree, T>&, const configuration<Tree, T>& q0,
+                                                             const configuration<Tree, T>& q1) const noexcept {
+        using namespace configuration_detail;
+        joint_vector<Tree, T> out{};
+        each_joint<Tree>([&](auto joint, std::size_t qo, std::size_t vo) {
+            using J = decltype(joint);
+            if constexpr (J::nq == 8) put(ctga::log(motor<T>(inverse(motor_at(&q0[qo])) * motor_at(&q1[qo]))), 6, &out[vo]);
+            else if constexpr (J::nq == 1) out[vo] = q1[qo] - q0[qo];
+        });
+        return out;
+    }
+};
+inline constexpr algorithm<difference_t, "difference"> difference{};
 
-// q₀ ⊕ t (q₁ ⊖ q₀): q₀ at t = 0, q₁ at t = 1, along the group's geodesic (a floating base turns
-// about one axis while its origin moves along a helix: a screw motion, §3).
-template <class Tree, class T>
-[[nodiscard]] constexpr configuration<Tree, T> interpolate(const model<Tree, T>& m, const configuration<Tree, T>& q0,
-                                                           const configuration<Tree, T>& q1, const T& t) noexcept {
-    joint_vector<Tree, T> v = difference(m, q0, q1);
-    for (T& x : v) x = t * x;
-    return integrate(m, q0, v);
-}
+struct interpolate_t {
+    // q₀ ⊕ t (q₁ ⊖ q₀): q₀ at t = 0, q₁ at t = 1, along the group's geodesic (a floating base turns
+    // about one axis while its origin moves along a helix: a screw motion, §3).
+    template <class Tree, class T>
+    [[nodiscard]] constexpr configuration<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q0,
+                                                              const configuration<Tree, T>& q1, const T& t) const noexcept {
+        joint_vector<Tree, T> v = difference(m, q0, q1);
+        for (T& x : v) x = t * x;
+        return integrate(m, q0, v);
+    }
+};
+inline constexpr algorithm<interpolate_t, "interpolate"> interpolate{};
 
 // Every joint at 0, every floating joint at the identity motor.
 template <class Tree, class T>

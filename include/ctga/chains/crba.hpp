@@ -24,6 +24,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/runs.hpp"
 #include "ctga/chains/tree.hpp"
@@ -256,6 +257,6 @@ struct crba_t {
         else return algorithm_detail::crba_local(m, q);
     }
 };
-inline constexpr crba_t crba{};
+inline constexpr algorithm<crba_t, "crba"> crba{};
 
 }  // namespace ctga::chains

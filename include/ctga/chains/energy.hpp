@@ -5,6 +5,7 @@
 
 #include <cstddef>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/forward_kinematics.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
@@ -33,7 +34,7 @@ struct tree_kinetic_energy_t {
         return e;
     }
 };
-inline constexpr tree_kinetic_energy_t tree_kinetic_energy{};
+inline constexpr algorithm<tree_kinetic_energy_t, "tree_kinetic_energy"> tree_kinetic_energy{};
 
 struct tree_potential_energy_t {
     // −Σ m_i g·c_i, c_i the world position of body i's centre of mass: with the body's pose (R, t)
@@ -53,6 +54,6 @@ struct tree_potential_energy_t {
         return e;
     }
 };
-inline constexpr tree_potential_energy_t tree_potential_energy{};
+inline constexpr algorithm<tree_potential_energy_t, "tree_potential_energy"> tree_potential_energy{};
 
 }  // namespace ctga::chains

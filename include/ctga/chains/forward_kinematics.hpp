@@ -3,6 +3,7 @@
 // body coordinates: the forward pass of passes.hpp with the world poses.
 #pragma once
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/mechanics/linear3.hpp"
@@ -37,6 +38,6 @@ struct forward_kinematics_t {
         return k;
     }
 };
-inline constexpr forward_kinematics_t forward_kinematics{};
+inline constexpr algorithm<forward_kinematics_t, "forward_kinematics"> forward_kinematics{};
 
 }  // namespace ctga::chains

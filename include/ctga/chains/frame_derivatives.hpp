@@ -21,6 +21,7 @@
 
 #include <cstddef>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/frame_jacobian.hpp"
 #include "ctga/chains/frames.hpp"
 #include "ctga/chains/mimic_expansion.hpp"
@@ -105,6 +106,6 @@ struct frame_motion_derivatives_t {
 };
 // ∂/∂(q, q̇, q̈) of frame_velocity and frame_acceleration of frame f (chains::body<I>,
 // chains::frame<"name">, frame_at<K>) in reference r, at the state (q, q̇, q̈).
-inline constexpr frame_motion_derivatives_t frame_motion_derivatives{};
+inline constexpr algorithm<frame_motion_derivatives_t, "frame_motion_derivatives"> frame_motion_derivatives{};
 
 }  // namespace ctga::chains

@@ -26,6 +26,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/forward_kinematics.hpp"
 #include "ctga/chains/frames.hpp"
 #include "ctga/chains/passes.hpp"
@@ -207,7 +208,7 @@ struct frame_jacobian_t {
         return frame_detail::jacobian(m, pose, f, r);
     }
 };
-inline constexpr frame_jacobian_t frame_jacobian{};
+inline constexpr algorithm<frame_jacobian_t, "frame_jacobian"> frame_jacobian{};
 
 struct frame_jacobian_time_variation_t {
     // J̇ along the motion; k: forward_kinematics(m, q, q̇) (world poses and body velocities).
@@ -245,6 +246,6 @@ struct frame_jacobian_time_variation_t {
         return out;
     }
 };
-inline constexpr frame_jacobian_time_variation_t frame_jacobian_time_variation{};
+inline constexpr algorithm<frame_jacobian_time_variation_t, "frame_jacobian_time_variation"> frame_jacobian_time_variation{};
 
 }  // namespace ctga::chains

@@ -23,6 +23,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/mechanics/linear3.hpp"
@@ -59,8 +60,9 @@ struct frame_on<Tree, std::integral_constant<std::size_t, I>> {
 };
 template <class Tree, fixed_string Name>
 struct frame_on<Tree, frame_name<Name>> {
-    static constexpr std::size_t index = frame_index<Tree, Name>();
+    static constexpr std::size_t index = Tree::frame_index_of(Name.view());
     static constexpr int body = index < Tree::frame_count ? Tree::frame_body[index] : -1;  // (no second error)
+    static_assert(sizeof(tree_detail::frame_named<Tree, Name>));  // the name checked apart from the index (why: tree.hpp)
     static constexpr bool placed = true;
 };
 template <class Tree, std::size_t K>
@@ -126,7 +128,7 @@ struct frame_pose_t {
         else return compose(k.pose[on::body], m.frames[on::index]);
     }
 };
-inline constexpr frame_pose_t frame_pose{};
+inline constexpr algorithm<frame_pose_t, "frame_pose"> frame_pose{};
 
 // The frame's velocity screw (k: forward_kinematics(m, q, q̇)), or its spatial acceleration: the
 // time derivative of the velocity screw's numbers in the same coordinates (k:
@@ -143,8 +145,8 @@ struct frame_motion_t {
         else return frame_detail::seen_from(m, k, f, Acceleration ? k.a[b] : k.v[b], r);
     }
 };
-inline constexpr frame_motion_t<false> frame_velocity{};
-inline constexpr frame_motion_t<true> frame_acceleration{};
+inline constexpr algorithm<frame_motion_t<false>, "frame_velocity"> frame_velocity{};
+inline constexpr algorithm<frame_motion_t<true>, "frame_acceleration"> frame_acceleration{};
 
 // The classical acceleration of the frame's origin, d²p/dt² = a_v + ω × v from the local (or
 // local_world_aligned) velocity and acceleration: in the frame's axes (local) or the world's
@@ -164,7 +166,7 @@ struct frame_classical_acceleration_t {
         }
     }
 };
-inline constexpr frame_classical_acceleration_t frame_classical_acceleration{};
+inline constexpr algorithm<frame_classical_acceleration_t, "frame_classical_acceleration"> frame_classical_acceleration{};
 
 // For tools: f(chains::frame_at<K>) for the frame of run-time index k (tree::find_frame), the
 // same code as with the frame named in the source; f's result for every frame has one type. An

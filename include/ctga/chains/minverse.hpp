@@ -24,6 +24,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/chains/tree_matrix.hpp"
@@ -275,6 +276,6 @@ struct minverse_t {
     }
 };
 // H⁻¹(q), the inverse of crba(m, q), with its components' pattern (tree_matrix.hpp).
-inline constexpr minverse_t minverse{};
+inline constexpr algorithm<minverse_t, "minverse"> minverse{};
 
 }  // namespace ctga::chains

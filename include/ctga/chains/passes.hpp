@@ -1,5 +1,5 @@
 // What the algorithms of a kinematic tree (tree.hpp; algorithms.hpp lists them) share: the
-// numbers they read and return (configuration, joint vectors, external wrenches), every body's
+// numbers they read and return (configuration, joint vectors, external wrenches: arguments.hpp), every body's
 // frame, velocity and acceleration (kinematics), and the forward pass that computes them
 // (Featherstone (2008) §4.1, §5.3). Screws for velocities and accelerations (§3), co-screws for
 // forces (§5), motor maps for the frames (motor.hpp).
@@ -22,6 +22,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/joints.hpp"
 #include "ctga/chains/runs.hpp"
 #include "ctga/chains/tree.hpp"
@@ -33,13 +34,6 @@
 #include "ctga/support/uninitialized.hpp"
 
 namespace ctga::chains {
-
-template <class Tree, class T = double>
-using configuration = std::array<T, Tree::nq>;  // q: the joints' numbers in body order
-template <class Tree, class T = double>
-using joint_vector = std::array<T, Tree::nv>;  // q̇, q̈, τ
-template <class Tree, class T = double>
-using body_wrenches = std::array<coscrew<T>, Tree::size>;  // external wrench on each body, body frame
 
 template <class Tree, class T = double>
 struct kinematics {

@@ -12,6 +12,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
 #include "ctga/mechanics/coscrew.hpp"
@@ -79,6 +80,6 @@ struct rnea_t {
         return algorithm_detail::rnea(m, q, qd, qdd, &f_ext);
     }
 };
-inline constexpr rnea_t rnea{};
+inline constexpr algorithm<rnea_t, "rnea"> rnea{};
 
 }  // namespace ctga::chains

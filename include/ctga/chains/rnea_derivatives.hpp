@@ -38,6 +38,7 @@
 #include <cstddef>
 #include <utility>
 
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/mimic_expansion.hpp"
 #include "ctga/chains/passes.hpp"
 #include "ctga/chains/tree.hpp"
@@ -226,6 +227,6 @@ private:
     }
 };
 // The derivatives of τ = rnea(m, q, q̇, q̈[, f_ext]) with τ itself: rnea_partials.
-inline constexpr rnea_derivatives_t rnea_derivatives{};
+inline constexpr algorithm<rnea_derivatives_t, "rnea_derivatives"> rnea_derivatives{};
 
 }  // namespace ctga::chains

@@ -25,6 +25,7 @@
 #include <boost/hana/tuple.hpp>
 
 #include "ctga/algebra/fixed_string.hpp"
+#include "ctga/chains/arguments.hpp"
 #include "ctga/chains/joints.hpp"
 #include "ctga/mechanics/body_inertia.hpp"
 #include "ctga/mechanics/mass_properties.hpp"
@@ -212,7 +213,8 @@ template <class... E>
 inline constexpr bool is_tree<tree<E...>> = true;
 
 // A frame named at compile time: frame_pose(m, k, chains::frame<"tool0">). A name the tree does
-// not have is a compile error (frame_index, whose instantiation shows the name).
+// not have is a compile error naming it: the_tree_has_no_frame_named<'t', 'o', 'o', 'l', '9'>
+// (arguments.hpp).
 template <fixed_string Name>
 struct frame_name {
     static constexpr fixed_string name = Name;
@@ -220,12 +222,19 @@ struct frame_name {
 template <fixed_string Name>
 inline constexpr frame_name<Name> frame{};
 
+namespace tree_detail {
+// A type whose size is asked where frame Name is looked up (static_assert(sizeof(…))): a class
+// whose instantiation reports the name when the tree has no such frame. Apart from computing the
+// index, so that Clang reports the name once, not again for every constant computed from it.
+template <class Tree, fixed_string Name>
+using frame_named = std::conditional_t<(Tree::frame_index_of(Name.view()) < Tree::frame_count), std::true_type,
+                                       spelt<the_tree_has_no_frame_named, Name>>;
+}  // namespace tree_detail
+
 template <class Tree, fixed_string Name>
 consteval std::size_t frame_index() {
-    constexpr std::size_t k = Tree::frame_index_of(Name.view());
-    static_assert(k < Tree::frame_count, "ctga::chains::frame: the tree has no frame of this name (the name is the "
-                                         "template argument of this frame_index)");
-    return k;
+    static_assert(sizeof(tree_detail::frame_named<Tree, Name>));
+    return Tree::frame_index_of(Name.view());
 }
 
 namespace tree_detail {

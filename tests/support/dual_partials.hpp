@@ -49,12 +49,14 @@ auto dual_partials(const ctga::chains::model<Tree>& m, const ctga::chains::confi
                     const std::size_t qo = Tree::q_offset[b], vo = Tree::v_offset[b];
                     const auto delta = [&](std::size_t k) { return seed(k, 0.0); };
                     if (Tree::nq_of[b] == 1) q[qo] = q[qo] + delta(vo);
-                    if (Tree::nq_of[b] == 8) {  // g (1 + ½(ω, v)): the motor moved in its own frame
-                        const ctga::motor<D> g{q[qo], q[qo + 1], q[qo + 2], q[qo + 3], q[qo + 4], q[qo + 5], q[qo + 6], q[qo + 7]};
-                        const ctga::motor<D> e{D(1.0),           delta(vo) * 0.5,     delta(vo + 1) * 0.5, delta(vo + 2) * 0.5,
-                                               D(0.0),           delta(vo + 3) * 0.5, delta(vo + 4) * 0.5, delta(vo + 5) * 0.5};
-                        const ctga::motor<D> ge = g * e;
-                        for (std::size_t k = 0; k < 8; ++k) q[qo + k] = ge[k];
+                    if constexpr (Tree::nq >= 8) {  // (a tree without a floating joint: not compiled)
+                        if (Tree::nq_of[b] == 8) {  // g (1 + ½(ω, v)): the motor moved in its own frame
+                            const ctga::motor<D> g{q[qo], q[qo + 1], q[qo + 2], q[qo + 3], q[qo + 4], q[qo + 5], q[qo + 6], q[qo + 7]};
+                            const ctga::motor<D> e{D(1.0),           delta(vo) * 0.5,     delta(vo + 1) * 0.5, delta(vo + 2) * 0.5,
+                                                   D(0.0),           delta(vo + 3) * 0.5, delta(vo + 4) * 0.5, delta(vo + 5) * 0.5};
+                            const ctga::motor<D> ge = g * e;
+                            for (std::size_t k = 0; k < 8; ++k) q[qo + k] = ge[k];
+                        }
                     }
                 }
             const Y y = algorithm(md, q, qd, x);

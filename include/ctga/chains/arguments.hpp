@@ -20,8 +20,9 @@
 // and, for chains::frame<"tool9">, the_tree_has_no_frame_named<'t', 'o', 'o', 'l', '9'>.
 //
 // The algorithm headers include this one before the others, so that the include chain a compiler
-// prints before the first diagnosed line is short (GCC and Clang print one line a level). An argument given as a braced list ({}) cannot be
-// diagnosed (nothing is deduced from it): a wrong call with one is the compiler's own error.
+// prints before the first diagnosed line is short (GCC and Clang print one line a level). An
+// argument given as a braced list ({}) cannot be diagnosed (nothing is deduced from it): a wrong
+// call with one is the compiler's own error.
 #pragma once
 
 #include <array>

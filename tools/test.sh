@@ -14,9 +14,9 @@
 # CTGA_CLANG=0 skips the Clang tree (a quicker local run). Without a clang++ (CTGA_SKIP_DEPS=1 on
 # a system that has none) it is skipped with a message; on Debian tools/deps.sh installs it, so
 # CI always runs both. Jobs: nproc for both builds and both ctest runs.
-# Cost from scratch on 2 cores (Debian 12, -j2, fresh clone, issue 41's close): g++ tree 837 s,
-# Clang tree 706 s (405 tests each), 1543 s in all; the tests compile at -O1 (tests/CMakeLists.txt:
-# at -O3 the same took 1934 s). The heaviest units (the kinematic-tree tests, in parts:
+# Cost from scratch on 2 cores (Debian 12, -j2, fresh clone, issue 41's close): g++ tree 765 s,
+# Clang tree 706 s (405 tests each), about 1470 s in all; the tests compile at -Og (g++) and -O1
+# (Clang) (tests/CMakeLists.txt: at -O3 the same took 1934 s). The heaviest units (the kinematic-tree tests, in parts:
 # tests/support/parts.hpp) take 20-30 s each at -j2.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

@@ -5,7 +5,8 @@
 // With MuJoCo found by CMake (CTGA_BENCH_MUJOCO), rnea, crba and aba also as <algorithm>_<tree>/mujoco
 // (chains_mujoco.cpp: the same trees in MuJoCo 2.2.2, checked against ctga before they are timed).
 // With CTGA_CHAINS_SCALING it is ctga_chains_scaling_* instead: rnea_chain/<N>/<implementation>,
-// aba_chain/<N>/…, crba_chain/<N>/… for the N listed (chains_scaling.cpp).
+// aba_chain/<N>/…, crba_chain/<N>/… for the N listed (chains_scaling.cpp). With the development
+// robots found (CMake: CTGA_BENCH_ROBOTS_DIR), their rows too: rnea_<robot>/ctga, … (chains_robot.cpp).
 //
 // Each kernel is one non-inlined call (chain_kernel) on one of 64 random states in memory,
 // cycling, so nothing folds and callgrind can count the instructions of a call alone:
@@ -29,6 +30,7 @@ int main(int argc, char** argv) {
     add_derivatives_chain30(table);
     add_derivatives_chain30_aba(table);
     add_derivatives_legged(table);
+    for (auto* add_robot : robot_tables()) add_robot(table);  // CTGA_BENCH_ROBOTS_DIR's robots, if built
 #endif
     return bench::run(table, argc, argv);
 }

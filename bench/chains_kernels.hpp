@@ -116,5 +116,10 @@ void add_derivatives_arm7(std::vector<entry>& table);  // the derivatives (chain
 void add_derivatives_chain30(std::vector<entry>& table);      // rnea_derivatives, minverse
 void add_derivatives_chain30_aba(std::vector<entry>& table);  // aba_derivatives
 void add_derivatives_legged(std::vector<entry>& table);
+// the real robots' tables (chains_robot.cpp, one unit per robot, each registering itself here)
+inline std::vector<void (*)(std::vector<entry>&)>& robot_tables() {
+    static std::vector<void (*)(std::vector<entry>&)> tables;
+    return tables;
+}
 
 }  // namespace bench::chains

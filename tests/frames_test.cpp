@@ -55,6 +55,7 @@
 #include "support/featherstone_frames.hpp"
 #include "support/parts.hpp"
 #include "support/random_floating_base.hpp"
+#include "support/random_structure.hpp"
 #include "support/random_tree.hpp"
 #include "support/relative_error.hpp"
 
@@ -115,14 +116,18 @@ constexpr ch::coupling<double> arm_coupling{0.7, -0.1};
 // Two arms on a floating base, each a parallel gripper whose right finger follows its left one,
 // and a mast: 20 bodies, more steps than runs make small, so the passes visit them by kind
 // (runs.hpp), mimic joints among them.
-// The left arm and the mast are aligned (ch::aligned: their placements translations), the right
-// arm is not.
+// The mast is aligned (ch::aligned: its placements translations), the left arm turned (ch::turned:
+// its placements' rotations signed permutations, a mimic finger among them), the right arm neither.
 template <class J>
 using al = ch::aligned<J>;
+template <class J>
+using tu = ch::turned<ch::turn{ch::axis::z, ch::axis::x, ch::axis::y}, J>;
+template <class J>
+using tu2 = ch::turned<ch::turn{ch::axis::minus_y, ch::axis::x, ch::axis::z}, J>;
 using two_grippers = ch::tree<ch::link<-1, ch::floating>,                                               //  0 base
-                              ch::link<0, al<ch::revolute_z>>, ch::link<1, al<ch::revolute<ch::axis::minus_y>>>,  //  1 left arm
-                              ch::link<2, al<ch::revolute_x>>, ch::link<3, al<ch::revolute_y>>, ch::link<4, al<ch::revolute_about>>,
-                              ch::link<5, al<ch::prismatic_x>>, ch::link<5, ch::mimic<al<ch::prismatic_x>, 6>>,  //  6, 7 fingers
+                              ch::link<0, tu<ch::revolute_z>>, ch::link<1, tu2<ch::revolute<ch::axis::minus_y>>>,  //  1 left arm
+                              ch::link<2, tu<ch::revolute_x>>, ch::link<3, al<ch::revolute_y>>, ch::link<4, tu2<ch::revolute_about>>,
+                              ch::link<5, tu<ch::prismatic_x>>, ch::link<5, ch::mimic<tu2<ch::prismatic_x>, 6>>,  //  6, 7 fingers
                               ch::link<0, ch::fixed>,                                                   //  8 torso
                               ch::link<8, ch::revolute_z>, ch::link<9, ch::revolute<ch::axis::minus_y>>,  //  9 right arm
                               ch::link<10, ch::revolute_x>, ch::link<11, ch::revolute_y>, ch::link<12, ch::revolute_about>,
@@ -173,8 +178,8 @@ struct ref_joint<ch::floating> {
 };
 template <class J, std::size_t M>
 struct ref_joint<ch::mimic<J, M>> : ref_joint<J> {};
-template <class J>
-struct ref_joint<ch::aligned<J>> : ref_joint<J> {};
+template <ch::turn P, class J>
+struct ref_joint<ch::turned<P, J>> : ref_joint<J> {};
 
 // axis::x, y, z, minus_x, minus_y, minus_z as a unit vector
 inline fs::vec3 axis_vector(int a) { return (a < 3 ? 1.0 : -1.0) * fs::vec3::Unit(a % 3); }
@@ -261,7 +266,7 @@ draw<Tree> make_draw(std::mt19937_64& rng, const ch::coupling<double>& coupling)
             b.parent = Tree::parent[I];
             b.kind = ref_joint<J>::kind;
             b.axis = ref_joint<J>::axis >= 0 ? axis_vector(ref_joint<J>::axis) : fs::random_unit_vec3(rng);
-            b.rotation = ch::is_aligned<J> ? fs::mat3::Identity() : fs::random_rotation(rng);
+            b.rotation = ch::is_turned<J> ? ctga::test::turn_rotation(ch::placement_turn<J>) : fs::random_rotation(rng);
             b.translation = fs::uniform_vec3(rng, 0.5);
             b.mass = fs::uniform(rng, 0.5, 2.0);
             b.com = fs::uniform_vec3(rng, 0.3);

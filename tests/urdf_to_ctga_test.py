@@ -66,8 +66,9 @@ def numbers(s):
 
 
 def strip_aligned(t):
-    """t without the aligned<...> the converter puts on a joint whose placement does not turn
-    (test_aligned checks where it goes)."""
+    """t without the aligned<...> or turned<turn{...}, ...> the converter puts on a joint whose
+    placement does not turn or turns by multiples of pi/2 (test_aligned checks where they go)."""
+    t = re.sub(r"ctga::chains::turned<ctga::chains::turn\{[^{}]*\}, ", "ctga::chains::aligned<", t)
     return re.sub(r"ctga::chains::aligned<(.*)>$", r"\1", re.sub(r"ctga::chains::aligned<([^<>]*(?:<[^<>]*>)?)>", r"\1", t))
 
 
@@ -856,8 +857,9 @@ class Converter(unittest.TestCase):
     # ---- aligned joints -----------------------------------------------------------------------------
 
     def test_aligned(self):
-        """A body whose placement does not turn gets aligned<Joint>; one whose placement turns (its own
-        rpy, or a merged fixed joint's) keeps the plain joint; a mimic wraps the aligned joint."""
+        """A body whose placement does not turn gets aligned<Joint>; one turned by multiples of pi/2
+        turned<turn{...}, Joint>; one whose placement turns otherwise (its own rpy, or a merged fixed
+        joint's) keeps the plain joint; a mimic wraps the aligned joint."""
         header = self.convert(robot(
             link("base", ""),
             joint("a", "revolute", "base", "l1", xyz="0 0 0.3"), link("l1"),
@@ -868,7 +870,8 @@ class Converter(unittest.TestCase):
                   extra='<mimic joint="a" multiplier="2"/>'), link("l4")))
         self.assertEqual(link_entries(header), [
             ("-1", "ctga::chains::aligned<ctga::chains::revolute_z>"),
-            ("0", "ctga::chains::revolute_y"),
+            ("0", "ctga::chains::turned<ctga::chains::turn{ctga::chains::axis::y, ctga::chains::axis::minus_x, "
+                  "ctga::chains::axis::z}, ctga::chains::revolute_y>"),
             ("1", "ctga::chains::prismatic_x"),
             ("2", "ctga::chains::mimic<ctga::chains::aligned<ctga::chains::revolute_y>, 0>")])
         # with a floating base the base's identity placement is aligned too
@@ -876,6 +879,36 @@ class Converter(unittest.TestCase):
                               "--floating-base")
         self.assertEqual(link_entries(header), [("-1", "ctga::chains::aligned<ctga::chains::floating>"),
                                                 ("0", "ctga::chains::revolute_z")])
+
+    def test_turned(self):
+        """A turn by multiples of pi/2 is recognised to the rounding of the angle's written digits
+        (1e-4 or finer), made exact (its motor's numbers 0, +-1/2, +-sqrt(1/2), +-1), and composed
+        exactly with merged fixed joints' turns (two that cancel leave aligned<>)."""
+        def body(rpy, extra_fixed_rpy=None):
+            parts = [link("base", ""), joint("a", "revolute", "base", "l1", xyz="0 0 0.3", rpy=rpy), link("l1")]
+            if extra_fixed_rpy is not None:
+                parts = [link("base", ""), joint("f", "fixed", "base", "mid", rpy=extra_fixed_rpy), link("mid", ""),
+                         joint("a", "revolute", "mid", "l1", xyz="0 0 0.3", rpy=rpy), link("l1")]
+            return link_entries(self.convert(robot(*parts)))[0][1]
+        turned = "ctga::chains::turned<ctga::chains::turn{"
+        # URDF rpy: R = Rz(yaw) Ry(pitch) Rx(roll); roll pi/2 takes y to z and z to -y
+        self.assertEqual(body("1.5707963267948966 0 0"), turned + "ctga::chains::axis::x, ctga::chains::axis::z, "
+                         "ctga::chains::axis::minus_y}, ctga::chains::revolute_z>")
+        for rpy in ("1.57079632679 0 0", "1.5708 0 0", "15707.963e-4 0 0"):  # rounded to their digits
+            self.assertTrue(body(rpy).startswith(turned), rpy)
+        for rpy in ("1.571 0 0", "1.5707 0 0", "0.5 0 0", "1.57079632679 0.1 0"):  # coarser, off, or another angle
+            self.assertEqual(body(rpy), "ctga::chains::revolute_z", rpy)
+        # Rz(-pi/2) Rx(pi): x -> -y, y -> -x, z -> -z
+        self.assertEqual(body("3.14159265359 0 -1.57079632679"), turned + "ctga::chains::axis::minus_y, "
+                         "ctga::chains::axis::minus_x, ctga::chains::axis::minus_z}, ctga::chains::revolute_z>")
+        # a merged fixed joint's turn composed exactly: yaw +pi/2 then -pi/2 is no turn
+        self.assertEqual(body("0 0 -1.5707963267948966", "0 0 1.5707963267948966"),
+                         "ctga::chains::aligned<ctga::chains::revolute_z>")
+        self.assertTrue(body("0 0 1.5707963267948966", "1.5707963267948966 0 0").startswith(turned))
+        # the placement motor's rotation is exact: a quarter turn's numbers are sqrt(1/2) and 0
+        t, theta, u = motor(body_block(self.convert(robot(link("base", ""), joint(
+            "a", "revolute", "base", "l1", rpy="1.57079632679 0 0"), link("l1"))), 0))
+        self.assertEqual((theta, u), (math.pi / 2, [1.0, 0.0, 0.0]))
 
     # ---- mimic ------------------------------------------------------------------------------------
 
@@ -1097,6 +1130,8 @@ class Converter(unittest.TestCase):
         header = self.convert(self.merge_robot(), "--keep-fixed")
         self.assertEqual(tree_lines(header), [("-1", "revolute_y"), ("0", "fixed"), ("1", "fixed"), ("2", "revolute_y"),
                                               ("0", "fixed")])
+        self.assertIn("ctga::chains::turned<ctga::chains::turn{ctga::chains::axis::y, ctga::chains::axis::minus_x, "
+                      "ctga::chains::axis::z}, ctga::chains::fixed>", header)  # d: yawed by pi/2
         self.assertEqual(names(header, "body_names"), ["a", "c", "d", "e", "g"])
         self.assertEqual(names(header, "joint_names"), ["ja", "jc", "jd", "je", "jg"])
         self.assertEqual(frame_lines(header), [("base", -1), ("a", 0), ("c", 1), ("d", 2), ("e", 3), ("g", 4)])

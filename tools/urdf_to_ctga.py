@@ -51,7 +51,12 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     A body whose placement does not turn (its joint's rpy 0 0 0, and those of the fixed joints merged
     on the way, composed exactly) gets its joint as aligned<Joint> (mimic<aligned<Joint>, M> for
     a mimic, aligned<with_armature<Joint>> with an armature): its map's rotation is the joint's
-    own, whose zeros the algorithms skip.
+    own, whose zeros the algorithms skip. One turned by multiples of pi/2 (each rpy angle k pi/2 to
+    the rounding of its written digits, 1e-4 or finer: "1.57079632679", "3.141592653589793"; the
+    turn made exact, and composed exactly with the merged fixed joints') gets
+    turned<turn{axes}, Joint>, axes the joint frame's x, y, z axes in the parent's
+    (turn{axis::minus_z, axis::y, axis::x}): its rotation is the joint's own with rows moved and
+    negated, skipped as an aligned joint's. Other rotations: the joint alone (a general placement).
   * planar (axis = the plane normal n) -> three bodies in a chain: prismatic along u1, prismatic
     along u2, revolute about n, (u1, u2, n) right-handed orthonormal. The first carries the joint's
     origin as its placement, the other two identity placements. The first two are massless virtual
@@ -249,10 +254,64 @@ def quat_mul(a, b):
             aw * by - ax * bz + ay * bw + az * bx, aw * bz + ax * by - ay * bx + az * bw)
 
 
+# The quaternions of the 24 rotations by multiples of pi/2 about coordinate axes (signed
+# permutations): components 0, +-1/2, +-sqrt(1/2), +-1 in one of three patterns. A placement turned
+# by one (to the rounding of the file's numbers) keeps these exact values, composes exactly, and
+# becomes turned<turn{...}, Joint> in the tree (its rotation skipped as aligned joints' are).
+QUARTER_VALUES = (0.0, 0.5, math.sqrt(0.5), 1.0)
+
+
+def snap_quarter(q):
+    """q as the exact quaternion of a signed permutation (sign chosen so that the first non-zero
+    component is positive) when it is one to 1e-12, else None."""
+    out = []
+    for c in q:
+        v = min(QUARTER_VALUES, key=lambda x: abs(abs(c) - x))
+        if abs(abs(c) - v) > 1e-12:
+            return None
+        out.append(math.copysign(v, c) if v else 0.0)
+    if sorted(abs(c) for c in out) not in ([0.0, 0.0, 0.0, 1.0], [0.0, 0.0, QUARTER_VALUES[2], QUARTER_VALUES[2]],
+                                           [0.5, 0.5, 0.5, 0.5]):
+        return None
+    first = next(c for c in out if c)
+    return tuple(-c if first < 0 and c else c for c in out)
+
+
+def is_quarter(q):
+    """Whether q is the exact quaternion of a signed permutation (snap_quarter's output)."""
+    return snap_quarter(q) == tuple(q)
+
+
+def quarter_turns(rpy, texts):
+    """The quaternion of rpy when each angle is a multiple k pi/2 written to its digits: |angle - k pi/2|
+    at most half a unit of its last written digit (and that unit 1e-4 or finer: "1.5708", not
+    "1.57"), or two units of double's rounding; else None."""
+    if texts is None:
+        return None
+    half_pi = math.pi / 2
+    for a, text in zip(rpy, texts):
+        k = round(a / half_pi)
+        mantissa, _, exponent = text.lower().partition("e")
+        decimals = len(mantissa.partition(".")[2]) - (int(exponent) if exponent else 0)
+        rounding = 0.5 * 10.0 ** -decimals
+        if rounding > 5e-5 and a != 0.0:
+            return None
+        if abs(a - k * half_pi) > max(rounding, 4 * EPS * abs(a)):
+            return None
+    return snap_quarter(rpy_quaternion([round(a / half_pi) * half_pi for a in rpy]))
+
+
 def quat_matrix(q):
-    """The rotation matrix of a unit quaternion (normalised here against accumulated rounding)."""
+    """The rotation matrix of a unit quaternion (normalised here against accumulated rounding;
+    exact for a signed permutation's)."""
     if q == IDENTITY_Q:
         return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    if is_quarter(q):
+        w, x, y, z = q
+        return [[float(round(e)) for e in row] for row in
+                [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+                 [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+                 [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]]]
     n = math.sqrt(sum(c * c for c in q))
     w, x, y, z = (c / n for c in q)
     return [[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
@@ -278,8 +337,10 @@ class Pose:
         self.q, self.p = tuple(q), [float(c) for c in p]
 
     @staticmethod
-    def origin(xyz, rpy):
-        return Pose(rpy_quaternion(rpy), xyz)
+    def origin(xyz, rpy, rpy_texts=None):
+        """A URDF <origin>; with the rpy attribute's words, a turn by multiples of pi/2 to their
+        rounding is made exact (quarter_turns)."""
+        return Pose(quarter_turns(rpy, rpy_texts) or rpy_quaternion(rpy), xyz)
 
     def is_identity(self):
         return self.q == IDENTITY_Q and self.p == [0.0, 0.0, 0.0]
@@ -295,7 +356,17 @@ class Pose:
         else:
             p = [a + b for a, b in zip(self.p, matvec(quat_matrix(self.q), child.p))]
         q = child.q if self.q == IDENTITY_Q else self.q if child.q == IDENTITY_Q else quat_mul(self.q, child.q)
+        if is_quarter(self.q) and is_quarter(child.q):
+            q = snap_quarter(q)  # exact again
         return Pose(q, p)
+
+    def turn(self):
+        """The joint frame's axes in the parent's, ("z", "minus_x", "y") say, when the rotation is a
+        signed permutation (exact), else None."""
+        if not is_quarter(self.q):
+            return None
+        r = quat_matrix(self.q)
+        return tuple(("" if r[i][j] > 0 else "minus_") + "xyz"[i] for j in range(3) for i in range(3) if r[i][j])
 
     def matrix(self):
         return quat_matrix(self.q)
@@ -413,13 +484,14 @@ class Mimic:
 
 
 class Joint:
-    def __init__(self, name, kind, parent, child, xyz, rpy, axis, mimic, limit=None, dynamics=None):
+    def __init__(self, name, kind, parent, child, xyz, rpy, axis, mimic, limit=None, dynamics=None, rpy_texts=None):
         self.name = name
         self.kind = kind      # one of SUPPORTED_TYPES
         self.parent = parent  # link names
         self.child = child
         self.xyz = xyz
         self.rpy = rpy
+        self.rpy_texts = rpy_texts  # the rpy attribute's three words as written (None: absent)
         self.axis = axis      # unit, joint frame (revolute, continuous, prismatic; planar: the normal), else None
         self.mimic = mimic    # Mimic or None
         self.limit = limit        # {lower, upper, velocity, effort: those given} (1-dof joints); None: no <limit>
@@ -585,7 +657,9 @@ def parse_urdf(path):
             mimic = Mimic(master, 1.0 if mult is None else parse_number(mult, f"{where}: <mimic multiplier>"),
                           0.0 if off is None else parse_number(off, f"{where}: <mimic offset>"))
         limit, dynamics = _limits_and_dynamics(je, kind, where) if kind in ONE_DOF else (None, None)
-        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis, mimic, limit, dynamics))
+        o = je.find("origin")
+        rpy_texts = o.get("rpy").split() if o is not None and o.get("rpy") is not None else None
+        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis, mimic, limit, dynamics, rpy_texts))
     return root.get("name", ""), links, joints
 
 
@@ -636,7 +710,7 @@ class Body:
         self.kind = kind                # a description for comments
         self.placement = placement      # Pose in the parent body's frame (or the world)
         self.joint_type = joint_type    # C++ type of its joint, fully qualified, without the wrappers below
-        self.aligned = placement.q == IDENTITY_Q  # aligned<...>: its placement does not turn
+        self.turn = placement.turn()    # its placement's turn by multiples of pi/2 (None: another rotation)
         self.axis = axis                # the run-time axis, or the axis for comments, or None
         self.takes_axis = takes_axis    # make_link takes the axis
         self.link = link                # the body's own URDF link (None: a planar joint's virtual body)
@@ -650,12 +724,15 @@ class Body:
 
     @property
     def cpp_joint(self):
-        """The joint's C++ type: mimic<aligned<J>, M>, aligned<with_armature<J>>, or some of them."""
+        """The joint's C++ type: mimic<aligned<J>, M>, turned<turn{...}, with_armature<J>>, or some of them."""
         t = self.joint_type
         if self.armature is not None:
             t = f"ctga::chains::with_armature<{t}>"
-        if self.aligned:
+        if self.turn == ("x", "y", "z"):
             t = f"ctga::chains::aligned<{t}>"
+        elif self.turn is not None:
+            axes = ", ".join(f"ctga::chains::axis::{a}" for a in self.turn)
+            t = f"ctga::chains::turned<ctga::chains::turn{{{axes}}}, {t}>"
         if self.master is not None:
             t = f"ctga::chains::mimic<{t}, {self.master}>"
         return t
@@ -906,7 +983,7 @@ def _assemble(links, by_name, joint_by_name, root, children, opts, locks):
         j, parent, ppose, pvia = stack.pop()
         link = by_name[j.child]
         lock = locks.get(j.name)
-        origin = Pose.origin(j.xyz, j.rpy)
+        origin = Pose.origin(j.xyz, j.rpy, j.rpy_texts)
         placement = ppose.then(origin if lock is None else origin.then(j.motion(lock.value)))
         if (j.kind == "fixed" or lock is not None) and not opts.keep_fixed:
             visit(link, parent, placement, pvia + [j.name])

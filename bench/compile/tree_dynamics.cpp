@@ -1,18 +1,23 @@
 // Compile-time cost, case (e): one translation unit with a tree's inverse dynamics (RNEA), forward
 // dynamics (ABA) and mass matrix (CRBA), the tree chosen by -DCTGA_BODIES=N (a serial chain of N
-// revolute joints cycling z, y, x) or -DCTGA_HUMANOID (39 bodies, 44 dofs on a floating base);
-// the trees of bench/chain_trees.hpp. Measured by tools/compile-cost.sh (compile seconds against
-// bodies); not part of any CMake target.
+// revolute joints cycling z, y, x) or -DCTGA_HUMANOID (39 bodies, 44 dofs on a floating base),
+// the trees of bench/chain_trees.hpp, or by -DCTGA_ROBOT=name with -DCTGA_ROBOT_HEADER="file": a
+// header tools/urdf_to_ctga.py wrote from a real robot's URDF (its tree name::tree). Measured by
+// tools/compile-cost.sh (compile seconds against bodies; --robots DIR); not part of any CMake target.
 #include <cstdio>
 
 #include <ctga/chains/algorithms.hpp>
 
+#ifdef CTGA_ROBOT
+#include CTGA_ROBOT_HEADER
+using tree_type = CTGA_ROBOT::tree;
+#else
 #include "../chain_trees.hpp"
-
 #ifdef CTGA_HUMANOID
 using tree_type = bench::chains::humanoid_tree;
 #else
 using tree_type = bench::chains::chain_tree<CTGA_BODIES>;
+#endif
 #endif
 namespace ch = ctga::chains;
 

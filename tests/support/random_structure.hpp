@@ -36,8 +36,9 @@ constexpr std::uint64_t splitmix(std::uint64_t& s) {
 
 // joint kinds by number: 0–2 revolute about x, y, z; 3–5 prismatic along x, y, z; 6 revolute
 // about a run-time axis; 7 prismatic along one; 8 fixed; 9 floating (body 0 only); K + 10: the
-// same joint aligned (ch::aligned: its placement a translation); K + 20 (K < 8): with an armature
-// (ch::with_armature), aligned or not
+// same joint turned (ch::turned<turn_number<K / 100>, …>: its placement's rotation one of the 24
+// signed permutations that are rotations, number 0 the identity: ch::aligned); K + 20 (K % 100 <
+// 8): with an armature (ch::with_armature), turned or not
 template <int K>
 using plain_joint_of = std::conditional_t<
     K == 0, ch::revolute_x,
@@ -56,8 +57,23 @@ using plain_joint_of = std::conditional_t<
                                                               std::conditional_t<K == 8, ch::fixed, ch::floating>>>>>>>>>;
 template <int K>
 using geared_of = std::conditional_t<(K < 20), plain_joint_of<K % 10>, ch::with_armature<plain_joint_of<(K % 20 < 8 ? K % 10 : 0)>>>;
+// the N-th rotation among the signed permutations (N < 24; 0: the identity)
+constexpr ch::turn turn_number(int n) {
+    const ch::axis plus[3] = {ch::axis::x, ch::axis::y, ch::axis::z}, minus[3] = {ch::axis::minus_x, ch::axis::minus_y, ch::axis::minus_z};
+    int found = 0;
+    for (int p = 0; p < 6; ++p)  // the permutations of (0, 1, 2), the identity first
+        for (int signs = 0; signs < 8; ++signs) {
+            const int i = p / 2, j = (i + 1 + p % 2) % 3, k = 3 - i - j;
+            const ch::turn t{(signs & 1) ? minus[i] : plus[i], (signs & 2) ? minus[j] : plus[j], (signs & 4) ? minus[k] : plus[k]};
+            if (t.is_rotation() && found++ == n) return t;
+        }
+    return {};
+}
 template <int K>
-using joint_of = std::conditional_t<(K % 20 < 10), geared_of<K>, ch::aligned<geared_of<K>>>;
+using joint_of = std::conditional_t<(K % 20 < 10), geared_of<K % 100>, ch::turned<turn_number(K / 100), geared_of<K % 100>>>;
+
+// + 10: turned, half of those aligned (turn number 0), the others by a turn drawn from r
+constexpr int turned_kind(std::uint64_t r) { return 10 + (((r >> 40) & 1) ? 0 : 100 * static_cast<int>(1 + (r >> 41) % 23)); }
 
 template <std::uint64_t Seed, std::size_t N, bool Floating, bool Aligned = false, bool Armature = false>
 struct random_structure {
@@ -73,7 +89,7 @@ struct random_structure {
             // half the time the previous body (long chains), else any earlier body or the world
             s.parent[i] = i == 0 ? -1 : (r & 1) ? static_cast<int>(i) - 1 : static_cast<int>((r >> 8) % (i + 1)) - 1;
             s.kind[i] = (i == 0 && Floating) ? 9 : static_cast<int>((r >> 32) % 9);
-            if (Aligned && ((r >> 24) & 1)) s.kind[i] += 10;  // about half the joints aligned
+            if (Aligned && ((r >> 24) & 1)) s.kind[i] += turned_kind(r);  // about half the joints turned
             if (Armature && s.kind[i] % 10 < 8 && i % 3 == 1) s.kind[i] += 20;  // every third body's, if 1-dof
         }
         return s;
@@ -94,7 +110,7 @@ struct random_kinds {
         for (std::size_t i = 0; i < N; ++i) {
             const std::uint64_t r = splitmix(state);
             k[i] = i == 0 ? 9 : static_cast<int>((r >> 32) % 9);
-            if (Aligned && ((r >> 24) & 1)) k[i] += 10;
+            if (Aligned && ((r >> 24) & 1)) k[i] += turned_kind(r);
         }
         return k;
     }();
@@ -115,13 +131,13 @@ struct draw {
     Eigen::VectorXd qd_ref, qdd_ref;
 };
 
-// J without aligned<…>: the joint the reference is given (with an identity rotation when aligned)
+// J without turned<…>: the joint the reference is given (with the turn's rotation when turned)
 template <class J>
 struct plain {
     using type = J;
 };
-template <class J>
-struct plain<ch::aligned<J>> {
+template <ch::turn P, class J>
+struct plain<ch::turned<P, J>> {
     using type = typename plain<J>::type;
 };
 template <class J>
@@ -130,6 +146,15 @@ struct plain<ch::with_armature<J>> {
 };
 template <class J>
 using plain_of = typename plain<J>::type;
+
+// a turn's rotation as the reference's matrix
+inline fs::mat3 turn_rotation(const ch::turn& P) {
+    const ctga::mat3<double> R = ch::turn_matrix<double>(P);
+    fs::mat3 out;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) out(i, j) = R[static_cast<std::size_t>(i)][static_cast<std::size_t>(j)];
+    return out;
+}
 
 template <class J>
 constexpr int kind_number() {
@@ -163,7 +188,7 @@ draw<Tree> make_draw(std::mt19937_64& rng) {
                      : k == 8         ? fs::joint_kind::fixed
                                       : fs::joint_kind::floating;
             b.axis = k <= 5 ? fs::vec3::Unit(k % 3) : fs::random_unit_vec3(rng);
-            b.rotation = ch::is_aligned<J> ? fs::mat3::Identity() : fs::random_rotation(rng);
+            b.rotation = ch::is_turned<J> ? turn_rotation(ch::placement_turn<J>) : fs::random_rotation(rng);
             b.translation = fs::uniform_vec3(rng, 0.5);
             b.mass = fs::uniform(rng, 0.5, 2.0);
             b.com = fs::uniform_vec3(rng, 0.3);

@@ -20,6 +20,9 @@
 //   mimic<J, M>             J (one dof) at q = r q_M + o, body M's joint    nq = nv = 0
 //   aligned<J>              J whose joint frame is aligned with the parent's: its placement a
 //                           pure translation (URDF rpy = 0, most joints of real robots)
+//   turned<turn{...}, J>    J whose joint frame is turned from the parent's by multiples of π/2
+//                           (a signed permutation: URDF rpy "1.5707963267948966 0 0", the other
+//                           joints of real robots); aligned<J> is turned<turn{}, J>
 //   with_armature<J>        J (one dof) with a rotor inertia reflected onto it (H_ii + a)
 //
 // The body frame is the joint frame moved by the joint: its map in the parent's frame is
@@ -27,11 +30,14 @@
 // rotation, whose shape (linear3.hpp) the type knows: a turn about coordinate axis k has
 // R_kk = 1 and four more zeros, so a screw or co-screw moves across the joint with 4m 2a per
 // 3-vector instead of 9m 6a (Featherstone's X_J X_T split, §4.1), and the map costs no product.
+// A turned joint's R = P R_J, P a signed permutation, has as many zeros, in other places, and −1
+// among its known entries: it costs the same.
 // The floating joint's velocity numbers are the body's screw relative to the joint frame in body
 // coordinates, (ω, v), and its configuration the eight coefficients of the motor in ctga::motor's
 // order; it moves as dg/dt = ½ g s (§3, body-frame velocity).
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <concepts>
 #include <cstddef>
@@ -183,13 +189,14 @@ struct revolute : joint_detail::one_blade<joint_detail::rotation_blade<A>, joint
         else
             return joint_detail::rotate_about_axis<joint_detail::index_of(A)>(placement, cs.cos, -cs.sin);
     }
-    // with the placement a translation t (aligned<revolute<A>>)
-    static constexpr linear3::shape aligned_shape = joint_detail::axis_rotation_shape<joint_detail::index_of(A)>;
+    // its own motion in the joint frame (turned<P, revolute<A>>): the turn R_k(±q), no translation
+    static constexpr linear3::shape own_shape = joint_detail::axis_rotation_shape<joint_detail::index_of(A)>;
+    static constexpr std::array<bool, 3> own_translation{false, false, false};
     template <class T>
-    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T* q) noexcept {
+    static constexpr motor_map<T> own_motion(const parameters<T>&, const T* q) noexcept {
         const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
         const T s = joint_detail::sign_of(A) > 0 ? cs.sin : -cs.sin;
-        return {joint_detail::axis_rotation<joint_detail::index_of(A)>(cs.cos, s), t};
+        return {joint_detail::axis_rotation<joint_detail::index_of(A)>(cs.cos, s), {}};
     }
 };
 
@@ -204,14 +211,15 @@ struct prismatic : joint_detail::one_blade<joint_detail::translation_blade<A>, j
         const T d = joint_detail::sign_of(A) > 0 ? q[0] : -q[0];
         return {placement.R, {placement.t[0] + d * placement.R[0][k], placement.t[1] + d * placement.R[1][k], placement.t[2] + d * placement.R[2][k]}};
     }
-    static constexpr linear3::shape aligned_shape = linear3::identity;
+    // its own motion: the translation ±q e_k
+    static constexpr linear3::shape own_shape = linear3::identity;
+    static constexpr std::array<bool, 3> own_translation{joint_detail::index_of(A) == 0, joint_detail::index_of(A) == 1,
+                                                         joint_detail::index_of(A) == 2};
     template <class T>
-    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T* q) noexcept {
-        constexpr int k = joint_detail::index_of(A);
-        const T d = joint_detail::sign_of(A) > 0 ? q[0] : -q[0];
-        vec3<T> out = t;
-        out[k] = out[k] + d;
-        return {joint_detail::identity3<T>(), out};
+    static constexpr motor_map<T> own_motion(const parameters<T>&, const T* q) noexcept {
+        vec3<T> d{};
+        d[joint_detail::index_of(A)] = joint_detail::sign_of(A) > 0 ? q[0] : -q[0];
+        return {joint_detail::identity3<T>(), d};
     }
 };
 
@@ -222,11 +230,12 @@ struct revolute_about : joint_detail::unit_axis_dof<"e2e3", "e3e1", "e1e2"> {
         const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
         return {joint_detail::multiply(placement.R, joint_detail::rodrigues(p.u, cs.cos, cs.sin)), placement.t};
     }
-    static constexpr linear3::shape aligned_shape = linear3::dense;
+    static constexpr linear3::shape own_shape = linear3::dense;
+    static constexpr std::array<bool, 3> own_translation{false, false, false};
     template <class T>
-    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>& p, const T* q) noexcept {
+    static constexpr motor_map<T> own_motion(const parameters<T>& p, const T* q) noexcept {
         const math::cos_sin_pair<T> cs = math::cos_sin(q[0]);
-        return {joint_detail::rodrigues(p.u, cs.cos, cs.sin), t};
+        return {joint_detail::rodrigues(p.u, cs.cos, cs.sin), {}};
     }
 };
 
@@ -237,10 +246,11 @@ struct prismatic_along : joint_detail::unit_axis_dof<"e1e", "e2e", "e3e"> {
         const vec3<T> d = linear3::apply(placement.R, p.u);
         return {placement.R, {placement.t[0] + q[0] * d[0], placement.t[1] + q[0] * d[1], placement.t[2] + q[0] * d[2]}};
     }
-    static constexpr linear3::shape aligned_shape = linear3::identity;
+    static constexpr linear3::shape own_shape = linear3::identity;
+    static constexpr std::array<bool, 3> own_translation{true, true, true};
     template <class T>
-    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>& p, const T* q) noexcept {
-        return {joint_detail::identity3<T>(), {t[0] + q[0] * p.u[0], t[1] + q[0] * p.u[1], t[2] + q[0] * p.u[2]}};
+    static constexpr motor_map<T> own_motion(const parameters<T>& p, const T* q) noexcept {
+        return {joint_detail::identity3<T>(), {q[0] * p.u[0], q[0] * p.u[1], q[0] * p.u[2]}};
     }
 };
 
@@ -260,10 +270,11 @@ struct fixed {
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const parameters<T>&, const T*) noexcept {
         return placement;
     }
-    static constexpr linear3::shape aligned_shape = linear3::identity;
+    static constexpr linear3::shape own_shape = linear3::identity;
+    static constexpr std::array<bool, 3> own_translation{false, false, false};
     template <class T>
-    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T*) noexcept {
-        return {joint_detail::identity3<T>(), t};
+    static constexpr motor_map<T> own_motion(const parameters<T>&, const T*) noexcept {
+        return {joint_detail::identity3<T>(), {}};
     }
 };
 
@@ -286,11 +297,11 @@ struct floating {
         const motor_map<T> J = map_of(motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]});
         return {joint_detail::multiply(placement.R, J.R), linear3::add(linear3::apply(placement.R, J.t), placement.t)};
     }
-    static constexpr linear3::shape aligned_shape = linear3::dense;
+    static constexpr linear3::shape own_shape = linear3::dense;
+    static constexpr std::array<bool, 3> own_translation{true, true, true};
     template <class T>
-    static constexpr motor_map<T> aligned_motion(const vec3<T>& t, const parameters<T>&, const T* q) noexcept {
-        const motor_map<T> J = map_of(motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]});
-        return {J.R, linear3::add(J.t, t)};
+    static constexpr motor_map<T> own_motion(const parameters<T>&, const T* q) noexcept {
+        return map_of(motor<T>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]});
     }
 };
 
@@ -339,26 +350,110 @@ inline constexpr bool is_mimic = false;
 template <class J, std::size_t M>
 inline constexpr bool is_mimic<mimic<J, M>> = true;
 
-// A joint J whose frame is aligned with its parent's: its placement is a pure translation t (checked
-// by make_link: not_aligned), so the body's map is J's motion alone moved by t (aligned_motion) and
-// its rotation has the shape aligned_shape (linear3.hpp), which the algorithms' transforms use.
-// A mimic joint follows an aligned one as mimic<aligned<J>, M>.
-template <class J>
-struct aligned : J {
-    static_assert(!is_mimic<J>, "ctga::chains::aligned: for a mimic joint write mimic<aligned<J>, Master>");
-    static constexpr linear3::shape shape = J::aligned_shape;
+// The turn of a joint frame from its parent's by multiples of π/2 about coordinate axes: the
+// parent's axes along which the joint frame's x, y and z axes lie, so that its rotation P is a
+// signed permutation (column j of P is ±e_k for the j-th axis). turn{} leaves the axes as they are.
+struct turn {
+    axis x = axis::x, y = axis::y, z = axis::z;
+    [[nodiscard]] constexpr axis column(std::size_t j) const noexcept { return j == 0 ? x : j == 1 ? y : z; }
+    // the column whose axis is the parent's k-th, so that row k of P R is ±row column_along(k) of R
+    [[nodiscard]] constexpr std::size_t column_along(std::size_t k) const noexcept {
+        for (std::size_t j = 0; j < 3; ++j)
+            if (static_cast<std::size_t>(joint_detail::index_of(column(j))) == k) return j;
+        return 3;
+    }
+    // a rotation: the three axes distinct and right-handed (x × y = z)
+    [[nodiscard]] constexpr bool is_rotation() const noexcept {
+        const int i = joint_detail::index_of(x), j = joint_detail::index_of(y), k = joint_detail::index_of(z);
+        if (i == j || j == k || i == k) return false;
+        const int parity = (j - i + 3) % 3 == 1 ? 1 : -1;  // (i, j, k) cyclic: an even permutation
+        return parity * joint_detail::sign_of(x) * joint_detail::sign_of(y) * joint_detail::sign_of(z) == 1;
+    }
+    friend constexpr bool operator==(const turn&, const turn&) = default;
+};
+// P as a matrix (for checks and references).
+template <class T>
+[[nodiscard]] constexpr mat3<T> turn_matrix(const turn& P) noexcept {
+    mat3<T> out{};
+    for (std::size_t j = 0; j < 3; ++j)
+        out[static_cast<std::size_t>(joint_detail::index_of(P.column(j)))][j] = T(joint_detail::sign_of(P.column(j)));
+    return out;
+}
+
+namespace joint_detail {
+// The shape of P R for R of shape S: row k is ±row column_along(k) of S, so an entry known to be 1
+// becomes ±1 and the zeros stay.
+constexpr linear3::shape turned_shape(const turn& P, const linear3::shape& S) noexcept {
+    linear3::shape out = S;
+    for (std::size_t k = 0; k < 3; ++k) {
+        const std::size_t j = P.column_along(k);
+        const bool minus = sign_of(P.column(j)) < 0;
+        for (std::size_t c = 0; c < 3; ++c) {
+            const linear3::entry e = S.at(j, c);
+            out.e[3 * k + c] = e == linear3::entry::any || e == linear3::entry::zero ? e
+                               : (e == linear3::entry::one) != minus                ? linear3::entry::one
+                                                                                    : linear3::entry::minus_one;
+        }
+    }
+    return out;
+}
+// ±x: x, or −x (one negation; none for a plus sign).
+template <int Sign, class T>
+CTGA_ALWAYS_INLINE constexpr T signed_entry(const T& x) noexcept {
+    if constexpr (Sign > 0) return x;
+    else return -x;
+}
+}  // namespace joint_detail
+
+// A joint J whose joint frame is turned from its parent's by P (its placement's rotation is P,
+// checked by make_link: not_aligned), so that the body's map is (P R_J, t + P t_J) for J's own
+// motion (R_J, t_J) in the joint frame (own_motion) and the placement's translation t: P only moves
+// and negates entries (none for turn{}, aligned<J>), and R's shape (linear3.hpp) is own_shape's
+// rows moved, which the algorithms' transforms use: a turned revolute joint crosses a screw at an
+// aligned one's cost. A mimic joint follows a turned one as mimic<turned<P, J>, M>.
+template <turn P, class J>
+struct turned : J {
+    static_assert(P.is_rotation(), "ctga::chains::turned: the joint frame's axes turn{x, y, z} must be the parent's "
+                                   "axes, each once, right-handed (a rotation by multiples of pi/2)");
+    static_assert(!is_mimic<J>, "ctga::chains::turned: for a mimic joint write mimic<turned<P, J>, Master>");
+    static constexpr linear3::shape shape = joint_detail::turned_shape(P, J::own_shape);
     template <class T>
     static constexpr motor_map<T> motion(const motor_map<T>& placement, const typename J::template parameters<T>& p,
                                          const T* q) noexcept {
-        return J::aligned_motion(placement.t, p, q);
+        const motor_map<T> own = J::own_motion(p, q);
+        // row k of P R_J is ±row j of R_J and entry k of P t_J is ±entry j of t_J (j = column_along(k))
+        const auto row = [&]<std::size_t k>() -> vec3<T> {
+            constexpr std::size_t j = P.column_along(k);
+            constexpr int sign = joint_detail::sign_of(P.column(j));
+            return {joint_detail::signed_entry<sign>(own.R[j][0]), joint_detail::signed_entry<sign>(own.R[j][1]),
+                    joint_detail::signed_entry<sign>(own.R[j][2])};
+        };
+        const auto translation = [&]<std::size_t k>() -> T {
+            constexpr std::size_t j = P.column_along(k);
+            if constexpr (J::own_translation[j])
+                return placement.t[k] + joint_detail::signed_entry<joint_detail::sign_of(P.column(j))>(own.t[j]);
+            else return placement.t[k];
+        };
+        return {{row.template operator()<0>(), row.template operator()<1>(), row.template operator()<2>()},
+                {translation.template operator()<0>(), translation.template operator()<1>(), translation.template operator()<2>()}};
     }
 };
 template <class J>
-inline constexpr bool is_aligned = false;
+using aligned = turned<turn{}, J>;
+// Whether J's placement rotation is known at compile time (turned, aligned, or a mimic of one).
 template <class J>
-inline constexpr bool is_aligned<aligned<J>> = true;
+inline constexpr bool is_turned = false;
+template <turn P, class J>
+inline constexpr bool is_turned<turned<P, J>> = true;
 template <class J, std::size_t M>
-inline constexpr bool is_aligned<mimic<J, M>> = is_aligned<J>;
+inline constexpr bool is_turned<mimic<J, M>> = is_turned<J>;
+// The turn of a turned joint's placement (turn{} for the others, whose placement is general).
+template <class J>
+inline constexpr turn placement_turn = turn{};
+template <turn P, class J>
+inline constexpr turn placement_turn<turned<P, J>> = P;
+template <class J, std::size_t M>
+inline constexpr turn placement_turn<mimic<J, M>> = placement_turn<J>;
 
 // A joint J of one degree of freedom driven through a gear: the inertia of its motor's rotor,
 // reflected (J_rotor · ratio²), its armature, a run-time parameter (link_parameters::armature),
@@ -376,14 +471,15 @@ template <class J>
 inline constexpr bool has_armature = false;
 template <class J>
 inline constexpr bool has_armature<with_armature<J>> = true;
-template <class J>
-inline constexpr bool has_armature<aligned<J>> = has_armature<J>;
+template <turn P, class J>
+inline constexpr bool has_armature<turned<P, J>> = has_armature<J>;
 
-// The shape of R in a body's map placement ∘ motion(q) (linear3.hpp): dense unless the joint is aligned.
+// The shape of R in a body's map placement ∘ motion(q) (linear3.hpp): dense unless the joint is
+// turned (or aligned).
 template <class J>
 inline constexpr linear3::shape map_shape = linear3::dense;
-template <class J>
-inline constexpr linear3::shape map_shape<aligned<J>> = aligned<J>::shape;
+template <turn P, class J>
+inline constexpr linear3::shape map_shape<turned<P, J>> = turned<P, J>::shape;
 template <class J, std::size_t M>
 inline constexpr linear3::shape map_shape<mimic<J, M>> = map_shape<J>;
 

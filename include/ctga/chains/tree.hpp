@@ -251,7 +251,7 @@ struct no_armature {
     template <class T>
     no_armature& operator=(const T&) noexcept {
         static_assert(sizeof(T) == 0,
-                      "ctga::chains: this joint has no armature: declare it with_armature<J> (aligned<with_armature<J>>) "
+                      "ctga::chains: this joint has no armature: declare it with_armature<J> (turned<P, with_armature<J>>) "
                       "in the tree type");
         return *this;
     }
@@ -339,12 +339,13 @@ constexpr checked<motor_map<T>> placement_map(const motor<T>& g) noexcept {
     if (!r) return {{}, r.error};
     return {map_of(*r), error_code::none};
 }
-// R = 1 to a few roundings (an aligned joint's placement, joints.hpp).
+// R = P to a few roundings (a turned or aligned joint's placement, joints.hpp).
 template <class T>
-constexpr bool identity_rotation(const mat3<T>& R) noexcept {
+constexpr bool is_the_turn(const mat3<T>& R, const turn& P) noexcept {
+    const mat3<T> expected = turn_matrix<T>(P);
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) {
-            const T d = R[i][j] - (i == j ? T(1) : T(0));
+            const T d = R[i][j] - expected[i][j];
             if (!((d < T(0) ? -d : d) <= T(64) * std::numeric_limits<T>::epsilon())) return false;
         }
     return true;
@@ -359,7 +360,7 @@ constexpr bool identity_rotation(const mat3<T>& R) noexcept {
 //   make_link<revolute_about>(placement, mass, axis)
 //   make_link<mimic<prismatic_y, 7>>(placement, mass, coupling<T>{-1.0, 0.01})
 // Reported: non_finite (a NaN or an infinity), not_a_motor (a placement that is not a unit motor
-// up to rounding), not_aligned (an aligned joint's placement that turns), not_a_unit_axis
+// up to rounding), not_aligned (a turned or aligned joint's placement whose rotation is not its type's turn), not_a_unit_axis
 // (‖u‖ ≠ 1 beyond rounding), and the mass properties' own errors.
 template <joint Joint, class T, class... Extra>
 [[nodiscard]] constexpr checked<link_parameters<Joint, T>> make_link(const motor<T>& placement,
@@ -380,8 +381,8 @@ template <joint Joint, class T, class... Extra>
                       "ctga::chains::make_link: the axis is a vec3 of the model's scalar type");
     const checked<motor_map<T>> X = tree_detail::placement_map(placement);
     if (!X) return {{}, X.error};
-    if constexpr (is_aligned<Joint>)
-        if (!tree_detail::identity_rotation(X->R)) return {{}, error_code::not_aligned};
+    if constexpr (is_turned<Joint>)
+        if (!tree_detail::is_the_turn(X->R, placement_turn<Joint>)) return {{}, error_code::not_aligned};
     if (!mass) return {{}, mass.error};
     link_parameters<Joint, T> out;
     out.placement = *X;

@@ -32,11 +32,12 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> add(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
 }
-// Which entries of a 3×3 matrix are known at compile time to be 0 or 1 (a shape): the rotation of
-// a joint whose frame is aligned with its parent's is a turn about one coordinate axis, with five
-// such entries (chains/joints.hpp, aligned). Applying the matrix skips the zeros and does not
-// multiply by the ones; the dense shape is the plain product.
-enum class entry : unsigned char { zero, one, any };
+// Which entries of a 3×3 matrix are known at compile time to be 0, 1 or −1 (a shape): the rotation
+// of a joint whose frame is aligned with its parent's is a turn about one coordinate axis, with five
+// such entries, and that of a joint turned by multiples of π/2 the same turn with its rows moved
+// and negated (chains/joints.hpp, turned). Applying the matrix skips the zeros and does not
+// multiply by ±1 (it adds or subtracts); the dense shape is the plain product.
+enum class entry : unsigned char { zero, one, minus_one, any };
 struct shape {
     std::array<entry, 9> e;  // row-major
     [[nodiscard]] constexpr entry at(std::size_t row, std::size_t col) const noexcept { return e[3 * row + col]; }
@@ -47,7 +48,8 @@ inline constexpr shape identity{{entry::one, entry::zero, entry::zero, entry::ze
 namespace shape_detail {
 struct nothing {};  // no term summed yet
 // Σ_c m(Row, c) x_c (m(c, Row) when Transposed) from column C on, left to right, over the entries S
-// does not know to be 0; an entry known to be 1 adds x_c. (All zero: 0.)
+// does not know to be 0; an entry known to be 1 adds x_c, one known to be −1 subtracts it (the
+// first term: −x_c). (All zero: 0.)
 template <shape S, bool Transposed, int Row, int C, class T, class Sum>
 constexpr T row_sum(const mat3<T>& m, const vec3<T>& x, const Sum& sum) noexcept {
     if constexpr (C == 3) {
@@ -57,9 +59,12 @@ constexpr T row_sum(const mat3<T>& m, const vec3<T>& x, const Sum& sum) noexcept
         constexpr entry e = Transposed ? S.at(C, Row) : S.at(Row, C);
         if constexpr (e == entry::zero) {
             return row_sum<S, Transposed, Row, C + 1>(m, x, sum);
+        } else if constexpr (e == entry::minus_one && !std::is_same_v<Sum, nothing>) {
+            return row_sum<S, Transposed, Row, C + 1>(m, x, T(sum - x[C]));
         } else {
             const T term = [&] {
                 if constexpr (e == entry::one) return x[C];
+                else if constexpr (e == entry::minus_one) return T(-x[C]);
                 else return (Transposed ? m[C][Row] : m[Row][C]) * x[C];
             }();
             if constexpr (std::is_same_v<Sum, nothing>) return row_sum<S, Transposed, Row, C + 1>(m, x, term);
@@ -69,9 +74,9 @@ constexpr T row_sum(const mat3<T>& m, const vec3<T>& x, const Sum& sum) noexcept
 }
 }  // namespace shape_detail
 
-// The flops of m x for m of shape S: per row, a multiplication for each entry that is neither 0
-// nor 1 and an addition for each non-zero entry but the first (dense: 15; a turn about a
-// coordinate axis: 6; the identity: 0).
+// The flops of m x for m of shape S: per row, a multiplication for each entry that is not known
+// (0, ±1) and an addition for each non-zero entry but the first (dense: 15; a turn about a
+// coordinate axis, turned or not: 6; the identity: 0; a row whose only entry is −1 negates, not counted).
 [[nodiscard]] constexpr std::size_t apply_cost(const shape& S) noexcept {
     std::size_t c = 0;
     for (std::size_t r = 0; r < 3; ++r) {

@@ -3,12 +3,12 @@
 // the identity ID(q, q̇, FD(q, q̇, τ)) = τ gives
 //   ∂q̈/∂τ = H⁻¹,   ∂q̈/∂q = −H⁻¹ ∂τ/∂q,   ∂q̈/∂q̇ = −H⁻¹ ∂τ/∂q̇
 // with ∂τ/∂(q, q̇) of inverse dynamics (rnea_derivatives.hpp) at q̈ = FD(q, q̇, τ). All from one
-// world geometry: H⁻¹ by the articulated-body recursion (minverse.hpp), which gives q̈ as well with
-// τ − the bias forces as one more right-hand side (ABA in the world frame: as accurate as aba,
-// where q̈ = H⁻¹(τ − b) lost accuracy with H's condition, the 30-body chain's ∂q̈ 2.1e-11 against
-// long-double duals), then ∂τ from the same velocities. Configuration derivatives are in the
-// tangent space, as rnea_derivatives'. H⁻¹ has the tree's components' pattern, ∂τ its
-// branches', so ∂q̈ has the components' (tree_matrix.hpp).
+// world geometry and its velocities: H and the bias forces b = τ(q, q̇, 0) (composite inertias and
+// forces, backwards), H = Lᵀ D L with the tree's sparsity (minverse.hpp), q̈ by its two triangular
+// solves, H⁻¹ from the factor, then ∂τ at q̈. (Issue 42 measured this against the articulated-body
+// recursion in the world frame that gave H⁻¹ and q̈ before: UR5 … → … ns, Solo 12 … → … ns.)
+// Configuration derivatives are in the tangent space, as rnea_derivatives'. H⁻¹ has the tree's
+// components' pattern, ∂τ its branches', so ∂q̈ has the components' (tree_matrix.hpp).
 // With mimic joints: q̈ by aba, ∂τ and H by rnea_derivatives, H⁻¹ from H's Cholesky factor.
 #pragma once
 
@@ -85,6 +85,43 @@ constexpr void minus_products(const tree_matrix<Tree, T, sparsity::components>& 
             if (C::pattern[i][j]) out1(i, j) = t1(j, i), out2(i, j) = t2(j, i);
 }
 
+// H and b = τ(q, q̇, 0) from the world geometry and velocities (derivative_velocities: c = v_λ × v
+// and F = v ×* N v − f_ext): with q̈ = 0 the accelerations are a_i = a_λ + c_i from −g at the
+// world; backwards, with each subtree's composite inertia N^c and force F^c (F_i = N_i a_i + F),
+// b_k = F^c_j(S_k) and H(k, l) = (N^c_j S_l)(S_k) for l a dof of body j and k one of j or an
+// ancestor (plus the armature on the diagonal). H's other entries are left as they are.
+template <class Tree, class T>
+constexpr void mass_and_bias(const derivative_pass<Tree, T>& d, const screw<T>& a_world, joint_matrix<Tree, T>& H,
+                             std::array<T, Tree::nv>& b) noexcept {
+    using tables = branch_tables<Tree>;
+    std::array<body_inertia<T>, Tree::size> Nc = d.N;
+    std::array<coscrew<T>, Tree::size> F = uninitialized_array<coscrew<T>, Tree::size>();
+    std::array<screw<T>, Tree::size> a = uninitialized_array<screw<T>, Tree::size>();
+    for (std::size_t i = 0; i < Tree::size; ++i) {
+        const int p = Tree::parent[i];
+        a[i] = (p < 0 ? a_world : a[static_cast<std::size_t>(p)]) + d.c[i];
+        F[i] = d.Fc[i] + momentum(d.N[i], a[i]);
+    }
+    for (std::size_t j = Tree::size; j-- > 0;) {
+        const std::size_t o = Tree::v_offset[j], nv = Tree::nv_of[j];
+        for (std::size_t c = o; c < o + nv; ++c) {
+            const coscrew<T> U = momentum(Nc[j], d.S[c]);
+            b[c] = pairing(F[j], d.S[c]);
+            for (std::size_t k = o; k < o + nv; ++k) H[k][c] = pairing(U, d.S[k]);
+            H[c][c] += d.armature[c];
+            for (std::size_t e = tables::supporting.first[j]; e < tables::supporting.first[j + 1]; ++e) {
+                const std::size_t k = tables::supporting.list[e];
+                H[k][c] = H[c][k] = pairing(U, d.S[k]);
+            }
+        }
+        if (const int p = Tree::parent[j]; p >= 0) {
+            const std::size_t q = static_cast<std::size_t>(p);
+            Nc[q] = Nc[q] + Nc[j];
+            F[q] = F[q] + F[j];
+        }
+    }
+}
+
 // ∂τ/∂q and ∂τ/∂q̇ without τ and M (derivative_backward writes what its output has).
 template <class Tree, class T>
 struct inverse_partials {
@@ -107,8 +144,8 @@ struct aba_derivatives_t {
     }
 
 private:
-    // One world geometry for all: H⁻¹ and q̈ by the articulated-body recursion (minverse.hpp, with
-    // the bias), then ∂τ at q̈ (rnea_derivatives.hpp) from the same velocities.
+    // One world geometry for all: H and b, H's tree factor, q̈ and H⁻¹ from it (minverse.hpp), then
+    // ∂τ at q̈ (rnea_derivatives.hpp) from the same velocities.
     template <class Tree, class T>
     static constexpr aba_partials<Tree, T> run(const model<Tree, T>& m, const configuration<Tree, T>& q,
                                                const joint_vector<Tree, T>& qd, const joint_vector<Tree, T>& tau,
@@ -127,11 +164,13 @@ private:
             derivative_pass<Tree, T> d{uninitialized};
             fill_world_geometry(d, m, q);
             for (std::size_t i = 0; i < Tree::size; ++i) derivative_velocities(d, i, qd.data(), f_ext);
-            aba_partials<Tree, T> out{{}, C(uninitialized), C(uninitialized), C(uninitialized)};
             const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
-            articulated_bias<Tree, T> bias{tau.data(), d.Fc, d.c, a_world,
-                                           out.qdd.data(), {}, uninitialized_array<screw<T>, Tree::size>()};
-            articulated_recursion(d, out.Minv, bias);
+            joint_matrix<Tree, T> H{};
+            std::array<T, Tree::nv> b;
+            mass_and_bias(d, a_world, H, b);
+            const tree_factor<Tree, T> f = factor_tree<Tree>(H);
+            for (std::size_t k = 0; k < Tree::nv; ++k) b[k] = tau[k] - b[k];
+            aba_partials<Tree, T> out{tree_solve(f, b), C(uninitialized), C(uninitialized), tree_inverse(f)};
             for (std::size_t i = 0; i < Tree::size; ++i) derivative_accelerations(d, i, a_world, out.qdd.data());
             inverse_partials<Tree, T> id;
             derivative_backward(d, id);

@@ -249,7 +249,9 @@ static_assert(std::is_same_v<mobile_gripper::tree::joint_at<7>, ch::aligned<ch::
 static_assert(std::is_same_v<mobile_gripper::tree::joint_at<8>, ch::mimic<ch::aligned<ch::prismatic_y>, 7>>);
 static_assert(std::is_same_v<mobile_gripper_ind::tree::joint_at<8>, ch::aligned<ch::prismatic_y>> && mobile_gripper_ind::tree::nv == 9);
 static_assert(std::is_same_v<mobile_gripper_kept::tree::joint_at<10>, ch::mimic<ch::aligned<ch::prismatic_y>, 9>>);
-static_assert(std::is_same_v<mobile_gripper_kept::tree::joint_at<3>, ch::fixed>);  // imu_joint turns
+// imu_joint yaws by pi/2 (rpy 0 0 1.5707963267948966): its x axis along the parent's y, y along −x
+static_assert(std::is_same_v<mobile_gripper_kept::tree::joint_at<3>,
+                             ch::turned<ch::turn{ch::axis::y, ch::axis::minus_x, ch::axis::z}, ch::fixed>>);
 static_assert(ch::frame_index<ur5e::tree, "tool0">() == 9 && ur5e::tree::frame_body[9] == 5);
 static_assert(ch::frame_index<legged::tree, "LF_FOOT">() == 10 && legged::tree::frame_body[10] == 3);
 

@@ -16,6 +16,9 @@
 #                                     bodies: serial chains of 8, 16, 32 and 64 bodies, the 39-body
 #                                     humanoid, and the arm (arm7_dynamics.cpp); a plot of seconds
 #                                     against bodies (docs/img/compile_trees.svg)
+#   (f) with --robots DIR: every DIR/*.urdf as it comes (tools/urdf_to_ctga.py, default options, and
+#                                     again with --floating-base), its RNEA, ABA and CRBA in one unit at
+#                                     -O2 (tree_dynamics.cpp -DCTGA_ROBOT); a table of seconds and MB
 #   (d) bench/compile/generators.cpp   one algebra of n generators and one geometric product of
 #                                     two general vectors, bivectors, even elements and general
 #                                     multivectors, n = 3..10 (past the loop threshold: looped)
@@ -26,7 +29,7 @@
 #
 #   bash tools/compile-cost.sh [--with-heaviest] [--heaviest tests/FILE.cpp] [--repeat K]
 #                              [--nmin 3] [--nmax 10] [--plot FILE.svg | --no-plot]
-#                              [--cxxflags 'FLAGS']
+#                              [--cxxflags 'FLAGS'] [--robots DIR]
 #
 #   --repeat K   compile each unit K times and keep the fastest (default 1); the table also shows
 #                CPU time and the load average, so a measurement slowed by other work shows up
@@ -49,6 +52,7 @@ repeat=1
 nmin=3 nmax=10
 plot=$root/docs/img/compile_cost.svg
 extra=
+robots=
 while (($#)); do
     case $1 in
         --with-heaviest) with_heaviest=1 ;;
@@ -59,6 +63,7 @@ while (($#)); do
         --plot) plot=$2; shift ;;
         --no-plot) plot= ;;
         --cxxflags) extra=$2; shift ;;
+        --robots) robots=$2; shift ;;
         -h|--help) sed -n '2,/^set -e/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
         *) echo "compile-cost: unknown argument '$1' (see --help)" >&2; exit 2 ;;
     esac
@@ -159,6 +164,30 @@ tree_unit "arm7" 7 7 bench/compile/arm7_dynamics.cpp "-O2"
 for n in 8 16 32 64; do tree_unit "chain $n" "$n" "$n" bench/compile/tree_dynamics.cpp "-O2 -DCTGA_BODIES=$n"; done
 tree_unit "humanoid" 39 44 bench/compile/tree_dynamics.cpp "-O2 -DCTGA_HUMANOID"
 
+# ---- (f) real robots ----------------------------------------------------------------------
+rtsv=$out/compile_robots.tsv
+printf 'robot\toptions\tbodies\tdofs\twall\tcpu\trss\tstatus\tload\n' > "$rtsv"
+if [[ -n $robots ]]; then
+    echo "compile-cost: real robots' RNEA + ABA + CRBA, -O2" >&2
+    for urdf in "$robots"/*.urdf; do
+        for opt in "" --floating-base; do
+            name=$(basename "$urdf" .urdf)
+            hdr=$gen/robot_${name}${opt:+_floating}.hpp
+            printf '  %-40s %-16s … ' "$name" "${opt:-(default)}" >&2
+            if ! python3 "$root/tools/urdf_to_ctga.py" "$urdf" --name robot $opt -o "$hdr" 2>/dev/null; then
+                echo "not converted" >&2
+                continue
+            fi
+            # "// Robot "robot": B bodies, F frames, D degrees of freedom; …"
+            read -r bodies dofs < <(sed -nE '2s/.*: ([0-9]+) bodies, [0-9]+ frames, ([0-9]+) degrees.*/\1 \2/p' "$hdr")
+            measure "$ref_dir" "$(measure_cmd "$root/bench/compile/tree_dynamics.cpp" "-O2 -DCTGA_ROBOT=robot -include $hdr")"
+            printf '%ss %sMB %s\n' "$m_wall" "$m_rss" "$m_status" >&2
+            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$name" "${opt:-(default)}" "$bodies" "$dofs" "$m_wall" "$m_cpu" "$m_rss" \
+                "$m_status" "$m_load" >> "$rtsv"
+        done
+    done
+fi
+
 # ---- (d) n generators --------------------------------------------------------------------
 kinds=(vectors bivectors even general)
 echo "compile-cost: one product against the number of generators" >&2
@@ -230,6 +259,19 @@ std_flags=$(grep -oE -- '-(O[0-9s]|std=[^ ]+|DNDEBUG)' <<<"$flags" | paste -sd' 
     done
     [[ -z $plot ]] || printf '\n![compile seconds against bodies](img/compile_trees.svg)\n'
     echo
+    if [[ -n $robots ]]; then
+        echo "(f) Real robots as their URDF comes (\`--robots $(basename "$robots")\`: every file converted by"
+        echo "\`tools/urdf_to_ctga.py\` with its default options and with \`--floating-base\`), RNEA, ABA and"
+        echo "CRBA in one unit at -O2 (\`tree_dynamics.cpp -DCTGA_ROBOT\`). Target (issue 42): ≤ 10 s and ≤ 1 GB."
+        echo
+        echo "| robot | options | bodies | dofs | wall s | cpu s | peak MB | load |"
+        echo "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: |"
+        tail -n +2 "$rtsv" | while IFS=$'\t' read -r name opt bodies dofs wall cpu rss status l; do
+            [[ $status == ok ]] || wall="$wall ($status)"
+            echo "| $name | $opt | $bodies | $dofs | $wall | $cpu | $rss | $l |"
+        done
+        echo
+    fi
     echo "One algebra of n generators e1 … en (squares −1, the last 0) and one geometric product of two"
     echo "general operands, evaluated at run time (\`bench/compile/generators.cpp\`, \`-DCTGA_N=n\`)."
     echo "ctga has no global product tables: the blade pairs, signs and the program are computed at"

@@ -1,16 +1,15 @@
 // Compile-time cost, case (e): one translation unit with a tree's inverse dynamics (RNEA), forward
 // dynamics (ABA) and mass matrix (CRBA), the tree chosen by -DCTGA_BODIES=N (a serial chain of N
 // revolute joints cycling z, y, x) or -DCTGA_HUMANOID (39 bodies, 44 dofs on a floating base),
-// the trees of bench/chain_trees.hpp, or by -DCTGA_ROBOT=name with -DCTGA_ROBOT_HEADER="file": a
-// header tools/urdf_to_ctga.py wrote from a real robot's URDF (its tree name::tree). Measured by
+// the trees of bench/chain_trees.hpp, or by -DCTGA_ROBOT=name with -include <header>: a header
+// tools/urdf_to_ctga.py wrote from a real robot's URDF (its tree name::tree). Measured by
 // tools/compile-cost.sh (compile seconds against bodies; --robots DIR); not part of any CMake target.
 #include <cstdio>
 
 #include <ctga/chains/algorithms.hpp>
 
 #ifdef CTGA_ROBOT
-#include CTGA_ROBOT_HEADER
-using tree_type = CTGA_ROBOT::tree;
+using tree_type = CTGA_ROBOT::tree;  // (the header by -include)
 #else
 #include "../chain_trees.hpp"
 #ifdef CTGA_HUMANOID

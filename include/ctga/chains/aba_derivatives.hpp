@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstddef>
+#include <type_traits>
 #include <utility>
 
 #include "ctga/chains/aba.hpp"
@@ -34,7 +35,7 @@ struct aba_partials {
 
 namespace algorithm_detail {
 // −A B₁ and −A B₂ for A = H⁻¹ (symmetric, the components' pattern) and B₁, B₂ of the branches'
-// pattern (∂τ/∂q, ∂τ/∂q̇): column j of a product is −Σ_k B(k, j) A(·, k) = −Σ_k B(k, j) A(k, ·)ᵀ,
+// pattern (∂τ/∂q, ∂τ/∂q̇; B₁'s columns of translates_tree zero): column j of a product is −Σ_k B(k, j) A(·, k) = −Σ_k B(k, j) A(k, ·)ᵀ,
 // over the k on j's branch only (B's pattern, a compile-time list per column), each a
 // multiply-add over A's whole row (contiguous, of constant length: the compiler vectorises it;
 // A's stored zeros keep the column in the components' pattern), formed as rows of the transpose;
@@ -59,6 +60,30 @@ struct branch_columns {
         return out;
     }();
 };
+// The dofs whose column of ∂τ/∂q is zero: a body on the world moved along a translation (a
+// prismatic root, a floating base's v): the whole tree translates rigidly and uniform gravity does
+// not see it (Ψ̇ = 0, Ψ̈ = (−g) × S = 0 for two translations), so its entries are exact zeros
+// and the product skips them (a quarter of ∂q̈/∂q's work on a legged robot).
+template <class J, std::size_t K>
+constexpr bool translation_dof() {  // S_K's blades all hold the null generator e (mask bit 3: e1e, e2e, e3e)
+    using S = std::remove_cvref_t<decltype(J::template subspace<K, double>(std::declval<const typename J::template parameters<double>&>()))>;
+    for (std::size_t i = 0; i < S::layout.size(); ++i)
+        if (!(S::layout.masks[i] & 8u)) return false;
+    return true;
+}
+template <class Tree, std::size_t B, std::size_t... K>
+constexpr void mark_translations(std::array<bool, Tree::nv>& out, std::index_sequence<K...>) {
+    ((out[Tree::v_offset[B] + K] = translation_dof<typename Tree::template joint_at<B>, K>()), ...);
+}
+template <class Tree, std::size_t... B>
+constexpr std::array<bool, Tree::nv> translations_on_world(std::index_sequence<B...>) {
+    std::array<bool, Tree::nv> out{};
+    ((Tree::parent[B] < 0 ? mark_translations<Tree, B>(out, std::make_index_sequence<Tree::template joint_at<B>::nv>{}) : void()), ...);
+    return out;
+}
+template <class Tree>
+inline constexpr std::array<bool, Tree::nv> translates_tree = translations_on_world<Tree>(std::make_index_sequence<Tree::size>{});
+
 template <class Tree, class T>
 constexpr void minus_products(const tree_matrix<Tree, T, sparsity::components>& A, const tree_matrix<Tree, T, sparsity::branches>& B1,
                               const tree_matrix<Tree, T, sparsity::branches>& B2, tree_matrix<Tree, T, sparsity::components>& out1,
@@ -74,10 +99,13 @@ constexpr void minus_products(const tree_matrix<Tree, T, sparsity::components>& 
             const std::size_t k = rows.list[e];
             const T b1 = B1(k, j), b2 = B2(k, j);
             const T* a = A.data() + k * n;
-            for (std::size_t i = 0; i < n; ++i) {
-                r1[i] -= b1 * a[i];
-                r2[i] -= b2 * a[i];
-            }
+            if (translates_tree<Tree>[j])  // B1's column j is zero
+                for (std::size_t i = 0; i < n; ++i) r2[i] -= b2 * a[i];
+            else
+                for (std::size_t i = 0; i < n; ++i) {
+                    r1[i] -= b1 * a[i];
+                    r2[i] -= b2 * a[i];
+                }
         }
     }
     for (std::size_t i = 0; i < n; ++i)

@@ -106,11 +106,10 @@ ch::model<Tree> built(const ctga::checked<ch::model<Tree>>& m) {
 
 // ---- a default model against its --keep-fixed model ----------------------------------------------
 
-// Per body of a tree: whether its joint is fixed.
+// Per body of a tree: whether its joint is fixed (fixed, aligned or turned: it does not move).
 template <class Tree>
 constexpr std::array<bool, Tree::size> fixed_joints = []<std::size_t... I>(std::index_sequence<I...>) {
-    return std::array<bool, Tree::size>{(std::is_same_v<typename Tree::template joint_at<I>, ch::fixed> ||
-                                         std::is_same_v<typename Tree::template joint_at<I>, ch::aligned<ch::fixed>>)...};
+    return std::array<bool, Tree::size>{!ch::moves<typename Tree::template joint_at<I>>...};
 }(std::make_index_sequence<Tree::size>{});
 
 // What a comparison checks: the frames (poses, Jacobians), the dynamics (RNEA, CRBA, ABA, centre

@@ -298,17 +298,20 @@ void compare_float(const ch::model<Tree, double>& md, const ch::model<Tree, floa
 template <ctga::fixed_string N, int B>
 using FF = ch::fixed_frame<N, B>;
 // (the converter wraps a joint whose placement does not turn in aligned<…>: every joint here but
-// the arm's fourth, whose origin has rpy, and the kept tool's fixed joint)
+// the arm's fourth, whose origin rolls by pi/2 (turned<…>: y along the parent's z, z along −y),
+// and the kept tool's fixed joint, whose rpy is no multiple of pi/2)
 template <class J>
 using al = ch::aligned<J>;
+template <class J>
+using rolled = ch::turned<ch::turn{ch::axis::x, ch::axis::z, ch::axis::minus_y}, J>;
 using arm7_expected = ch::tree<ch::link<-1, al<ch::revolute_z>>, ch::link<0, al<ch::revolute_y>>, ch::link<1, al<ch::revolute_z>>,
-                               ch::link<2, ch::revolute_y>, ch::link<3, al<ch::revolute_z>>, ch::link<4, al<ch::revolute_y>>,
+                               ch::link<2, rolled<ch::revolute_y>>, ch::link<3, al<ch::revolute_z>>, ch::link<4, al<ch::revolute_y>>,
                                ch::link<5, al<ch::revolute_about>>,  // the tool merged into link7's body
                                FF<"base_link", -1>, FF<"link1", 0>, FF<"link2", 1>, FF<"link3", 2>, FF<"link4", 3>, FF<"link5", 4>,
                                FF<"link6", 5>, FF<"link7", 6>, FF<"tool", 6>>;
 static_assert(std::is_same_v<arm7::tree, arm7_expected>);
 using arm7_kept_expected = ch::tree<ch::link<-1, al<ch::revolute_z>>, ch::link<0, al<ch::revolute_y>>, ch::link<1, al<ch::revolute_z>>,
-                                    ch::link<2, ch::revolute_y>, ch::link<3, al<ch::revolute_z>>, ch::link<4, al<ch::revolute_y>>,
+                                    ch::link<2, rolled<ch::revolute_y>>, ch::link<3, al<ch::revolute_z>>, ch::link<4, al<ch::revolute_y>>,
                                     ch::link<5, al<ch::revolute_about>>, ch::link<6, ch::fixed>,  //
                                     FF<"base_link", -1>, FF<"link1", 0>, FF<"link2", 1>, FF<"link3", 2>, FF<"link4", 3>,
                                     FF<"link5", 4>, FF<"link6", 5>, FF<"link7", 6>, FF<"tool", 7>>;

@@ -3,10 +3,10 @@
 // the identity ID(q, q̇, FD(q, q̇, τ)) = τ gives
 //   ∂q̈/∂τ = H⁻¹,   ∂q̈/∂q = −H⁻¹ ∂τ/∂q,   ∂q̈/∂q̇ = −H⁻¹ ∂τ/∂q̇
 // with ∂τ/∂(q, q̇) of inverse dynamics (rnea_derivatives.hpp) at q̈ = FD(q, q̇, τ). All from one
-// world geometry and its velocities: H and the bias forces b = τ(q, q̇, 0) (composite inertias and
-// forces, backwards), H = Lᵀ D L with the tree's sparsity (minverse.hpp), q̈ by its two triangular
-// solves, H⁻¹ from the factor, then ∂τ at q̈. (Issue 42 measured this against the articulated-body
-// recursion in the world frame that gave H⁻¹ and q̈ before: UR5 … → … ns, Solo 12 … → … ns.)
+// world geometry and its velocities, H⁻¹ and q̈ by minverse.hpp's route for the tree: H and the
+// bias forces b = τ(q, q̇, 0) (composite inertias and forces, backwards), H = Lᵀ D L with the
+// tree's sparsity, q̈ by its two triangular solves and H⁻¹ from the factor; or, on long chains,
+// the articulated-body recursion with τ − b as one more right-hand side. Then ∂τ at q̈.
 // Configuration derivatives are in the tangent space, as rnea_derivatives'. H⁻¹ has the tree's
 // components' pattern, ∂τ its branches', so ∂q̈ has the components' (tree_matrix.hpp).
 // With mimic joints: q̈ by aba, ∂τ and H by rnea_derivatives, H⁻¹ from H's Cholesky factor.
@@ -193,12 +193,20 @@ private:
             fill_world_geometry(d, m, q);
             for (std::size_t i = 0; i < Tree::size; ++i) derivative_velocities(d, i, qd.data(), f_ext);
             const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
-            joint_matrix<Tree, T> H{};
-            std::array<T, Tree::nv> b;
-            mass_and_bias(d, a_world, H, b);
-            const tree_factor<Tree, T> f = factor_tree<Tree>(H);
-            for (std::size_t k = 0; k < Tree::nv; ++k) b[k] = tau[k] - b[k];
-            aba_partials<Tree, T> out{tree_solve(f, b), C(uninitialized), C(uninitialized), tree_inverse(f)};
+            aba_partials<Tree, T> out{{}, C(uninitialized), C(uninitialized), C(uninitialized)};
+            if constexpr (inverse_by_factor<Tree>) {
+                joint_matrix<Tree, T> H{};
+                std::array<T, Tree::nv> b;
+                mass_and_bias(d, a_world, H, b);
+                const tree_factor<Tree, T> f = factor_tree<Tree>(H);
+                for (std::size_t k = 0; k < Tree::nv; ++k) b[k] = tau[k] - b[k];
+                out.qdd = tree_solve(f, b);
+                out.Minv = tree_inverse(f);
+            } else {  // the articulated-body recursion with τ − the bias forces as one more right-hand side
+                articulated_bias<Tree, T> bias{tau.data(), d.Fc, d.c, a_world,
+                                               out.qdd.data(), {}, uninitialized_array<screw<T>, Tree::size>()};
+                articulated_recursion(d, out.Minv, bias);
+            }
             for (std::size_t i = 0; i < Tree::size; ++i) derivative_accelerations(d, i, a_world, out.qdd.data());
             inverse_partials<Tree, T> id;
             derivative_backward(d, id);

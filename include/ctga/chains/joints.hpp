@@ -422,13 +422,13 @@ struct turned : J {
                                          const T* q) noexcept {
         const motor_map<T> own = J::own_motion(p, q);
         // row k of P R_J is ±row j of R_J and entry k of P t_J is ±entry j of t_J (j = column_along(k))
-        const auto row = [&]<std::size_t k>() -> vec3<T> {
+        const auto row = [&]<std::size_t k>() CTGA_INLINE_LAMBDA -> vec3<T> {
             constexpr std::size_t j = P.column_along(k);
             constexpr int sign = joint_detail::sign_of(P.column(j));
             return {joint_detail::signed_entry<sign>(own.R[j][0]), joint_detail::signed_entry<sign>(own.R[j][1]),
                     joint_detail::signed_entry<sign>(own.R[j][2])};
         };
-        const auto translation = [&]<std::size_t k>() -> T {
+        const auto translation = [&]<std::size_t k>() CTGA_INLINE_LAMBDA -> T {
             constexpr std::size_t j = P.column_along(k);
             if constexpr (J::own_translation[j])
                 return placement.t[k] + joint_detail::signed_entry<joint_detail::sign_of(P.column(j))>(own.t[j]);

@@ -90,7 +90,7 @@ struct articulated_inertia {
     }
 
     // Inertias in one frame add (§5: N is linear in the mass distribution): 21a.
-    [[nodiscard]] CTGA_ALWAYS_INLINE friend constexpr articulated_inertia operator+(const articulated_inertia& a,
+    [[nodiscard]] friend constexpr articulated_inertia operator+(const articulated_inertia& a,
                                                                  const articulated_inertia& b) noexcept {
         articulated_inertia out = uninitialized_value();
         for (std::size_t k = 0; k < 21; ++k) out.n[k] = a.n[k] + b.n[k];

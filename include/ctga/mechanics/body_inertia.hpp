@@ -89,7 +89,7 @@ struct body_inertia {
 
     // Two bodies' inertias in one frame add (§5: N is linear in the mass distribution), so a
     // composite of rigid bodies has a rigid body's N: its ten parameters are the sums (10a).
-    [[nodiscard]] CTGA_ALWAYS_INLINE friend constexpr body_inertia operator+(const body_inertia& a, const body_inertia& b) noexcept {
+    [[nodiscard]] friend constexpr body_inertia operator+(const body_inertia& a, const body_inertia& b) noexcept {
         return {a.m + b.m, a.hx + b.hx, a.hy + b.hy, a.hz + b.hz, a.ixx + b.ixx,
                 a.iyy + b.iyy, a.izz + b.izz, a.ixy + b.ixy, a.ixz + b.ixz, a.iyz + b.iyz};
     }

@@ -35,11 +35,12 @@ struct aba_partials {
 
 namespace algorithm_detail {
 // −A B₁ and −A B₂ for A = H⁻¹ (symmetric, the components' pattern) and B₁, B₂ of the branches'
-// pattern (∂τ/∂q, ∂τ/∂q̇; B₁'s columns of translates_tree zero): column j of a product is −Σ_k B(k, j) A(·, k) = −Σ_k B(k, j) A(k, ·)ᵀ,
-// over the k on j's branch only (B's pattern, a compile-time list per column), each a
-// multiply-add over A's whole row (contiguous, of constant length: the compiler vectorises it;
-// A's stored zeros keep the column in the components' pattern), formed as rows of the transpose;
-// both products in one sweep, so that each row of A is loaded once for both. aba_derivatives
+// pattern (∂τ/∂q, ∂τ/∂q̇; B₁'s columns of translates_tree zero): column j of a product is
+// −Σ_k B(k, j) A(·, k) = −Σ_k B(k, j) A(k, ·)ᵀ, over the k on j's branch only (B's pattern, a
+// compile-time list per column), each a multiply-add over A's whole row (contiguous, of constant
+// length: the compiler vectorises it; A's stored zeros keep the column in the components'
+// pattern), formed as rows of the transpose; both products in one sweep, so that each row of A is
+// loaded once for both. aba_derivatives
 // measured so 7.45 µs on the legged tree and 24.1 µs on the 30-body chain (one product at a
 // time); over B's full rows 8.2 and 23.1 µs; by runs of B's structural columns 10.0 and 30.7 µs
 // (variable lengths do not vectorise as well).

@@ -22,6 +22,8 @@
 #include "ctga/chains/minverse.hpp"
 #include "ctga/chains/rnea_derivatives.hpp"
 #include "ctga/chains/tree_matrix.hpp"
+#include "ctga/support/inline.hpp"
+#include "ctga/support/row_sum.hpp"
 
 namespace ctga::chains {
 
@@ -38,12 +40,9 @@ namespace algorithm_detail {
 // pattern (∂τ/∂q, ∂τ/∂q̇; B₁'s columns of translates_tree zero): column j of a product is
 // −Σ_k B(k, j) A(·, k) = −Σ_k B(k, j) A(k, ·)ᵀ, over the k on j's branch only (B's pattern, a
 // compile-time list per column), each a multiply-add over A's whole row (contiguous, of constant
-// length: the compiler vectorises it; A's stored zeros keep the column in the components'
-// pattern), formed as rows of the transpose; both products in one sweep, so that each row of A is
-// loaded once for both. aba_derivatives
-// measured so 7.45 µs on the legged tree and 24.1 µs on the 30-body chain (one product at a
-// time); over B's full rows 8.2 and 23.1 µs; by runs of B's structural columns 10.0 and 30.7 µs
-// (variable lengths do not vectorise as well).
+// length; A's stored zeros make the entries outside j's component exact zeros), the column's sum
+// in registers (row_sum.hpp) and written once. Measured, the legged tree's aba_derivatives: 7.45 µs
+// by columns summed in memory, 8.2 over B's full rows, 10.0 by runs of B's structural columns.
 template <class Tree>
 struct branch_columns {
     // the rows k of column j in the branches' pattern: list[first[j] … first[j + 1])
@@ -85,33 +84,33 @@ constexpr std::array<bool, Tree::nv> translations_on_world(std::index_sequence<B
 template <class Tree>
 inline constexpr std::array<bool, Tree::nv> translates_tree = translations_on_world<Tree>(std::make_index_sequence<Tree::size>{});
 
-template <class Tree, class T>
-constexpr void minus_products(const tree_matrix<Tree, T, sparsity::components>& A, const tree_matrix<Tree, T, sparsity::branches>& B1,
-                              const tree_matrix<Tree, T, sparsity::branches>& B2, tree_matrix<Tree, T, sparsity::components>& out1,
-                              tree_matrix<Tree, T, sparsity::components>& out2) noexcept {
-    using C = tree_matrix<Tree, T, sparsity::components>;
-    constexpr std::size_t n = Tree::nv;
+// Column j of −A B, rows [First, n) in passes of at most 12 registers (row_sum.hpp).
+template <class Tree, std::size_t L, std::size_t First = 0, class T>
+CTGA_ALWAYS_INLINE constexpr void minus_column(const T* A, const T* B, std::size_t j, T* out) noexcept {
+    constexpr std::size_t n = Tree::nv, pass = 12 * L, count = n - First < pass ? n - First : pass;
     constexpr const auto& rows = branch_columns<Tree>::rows;
-    C t1, t2;  // the transposes, zero
-    for (std::size_t j = 0; j < n; ++j) {
-        T* r1 = t1.data() + j * n;
-        T* r2 = t2.data() + j * n;
-        for (std::size_t e = rows.first[j]; e < rows.first[j + 1]; ++e) {
-            const std::size_t k = rows.list[e];
-            const T b1 = B1(k, j), b2 = B2(k, j);
-            const T* a = A.data() + k * n;
-            if (translates_tree<Tree>[j])  // B1's column j is zero
-                for (std::size_t i = 0; i < n; ++i) r2[i] -= b2 * a[i];
-            else
-                for (std::size_t i = 0; i < n; ++i) {
-                    r1[i] -= b1 * a[i];
-                    r2[i] -= b2 * a[i];
-                }
-        }
+    row_sum<T, count, L> s;
+    for (std::size_t e = rows.first[j]; e < rows.first[j + 1]; ++e) {
+        const std::size_t k = rows.list[e];
+        s.subtract(B[k * n + j], A + k * n + First);
     }
-    for (std::size_t i = 0; i < n; ++i)
-        for (std::size_t j = 0; j < n; ++j)
-            if (C::pattern[i][j]) out1(i, j) = t1(j, i), out2(i, j) = t2(j, i);
+    s.each([&](std::size_t i, const T& v) CTGA_INLINE_LAMBDA { out[(First + i) * n + j] = v; });
+    if constexpr (First + count < n) minus_column<Tree, L, First + count>(A, B, j, out);
+}
+template <class Tree, std::size_t L, class T>
+constexpr void minus_products_by(const T* A, const T* B1, const T* B2, T* out1, T* out2) noexcept {
+    for (std::size_t j = 0; j < Tree::nv; ++j) {
+        if (translates_tree<Tree>[j])  // B1's column j is zero
+            for (std::size_t i = 0; i < Tree::nv; ++i) out1[i * Tree::nv + j] = T(0);
+        else minus_column<Tree, L>(A, B1, j, out1);
+        minus_column<Tree, L>(A, B2, j, out2);
+    }
+}
+template <class Tree, class T, class B>
+constexpr void minus_products(const tree_matrix<Tree, T, sparsity::components>& A, const B& B1, const B& B2,
+                              tree_matrix<Tree, T, sparsity::components>& out1, tree_matrix<Tree, T, sparsity::components>& out2) noexcept {
+    if (std::is_constant_evaluated()) minus_products_by<Tree, 1>(A.data(), B1.data(), B2.data(), out1.data(), out2.data());
+    else minus_products_by<Tree, row_lanes<T>>(A.data(), B1.data(), B2.data(), out1.data(), out2.data());
 }
 
 // H and b = τ(q, q̇, 0) from the world geometry and velocities (derivative_velocities: c = v_λ × v
@@ -151,10 +150,17 @@ constexpr void mass_and_bias(const derivative_pass<Tree, T>& d, const screw<T>& 
     }
 }
 
-// ∂τ/∂q and ∂τ/∂q̇ without τ and M (derivative_backward writes what its output has).
+// ∂τ/∂q and ∂τ/∂q̇ without τ and M (derivative_backward writes what its output has): only their
+// pattern's entries are written and read (minus_products), the rest left unset.
+template <class Tree, class T>
+struct pattern_entries {
+    std::array<T, Tree::nv * Tree::nv> entries;
+    [[nodiscard]] constexpr T& operator()(std::size_t i, std::size_t j) noexcept { return entries[i * Tree::nv + j]; }
+    [[nodiscard]] constexpr const T* data() const noexcept { return entries.data(); }
+};
 template <class Tree, class T>
 struct inverse_partials {
-    tree_matrix<Tree, T, sparsity::branches> dtau_dq{uninitialized}, dtau_dv{uninitialized};
+    pattern_entries<Tree, T> dtau_dq, dtau_dv;
 };
 }  // namespace algorithm_detail
 
@@ -196,10 +202,10 @@ private:
             const screw<T> a_world{T(0), T(0), T(0), -m.gravity[0], -m.gravity[1], -m.gravity[2]};
             aba_partials<Tree, T> out{{}, C(uninitialized), C(uninitialized), C(uninitialized)};
             if constexpr (inverse_by_factor<Tree>) {
-                joint_matrix<Tree, T> H{};
+                tree_factor<Tree, T> f;  // H's pattern only is written and read
                 std::array<T, Tree::nv> b;
-                mass_and_bias(d, a_world, H, b);
-                const tree_factor<Tree, T> f = factor_tree<Tree>(H);
+                mass_and_bias(d, a_world, f.LD, b);
+                factor_tree(f);
                 for (std::size_t k = 0; k < Tree::nv; ++k) b[k] = tau[k] - b[k];
                 out.qdd = tree_solve(f, b);
                 out.Minv = tree_inverse(f);

@@ -3,7 +3,9 @@
 // of the three-piece reduction), 1e-30 absolute next to a zero at k π/2, libm's own numbers beyond,
 // NaN for NaN and ±∞, −0 kept. And one rigid body per lane: the single-body mechanics and the
 // integrators on packs give every lane the double results bit for bit (no cos or sin there),
-// motor renormalisation lane by lane with its failures per lane.
+// motor renormalisation lane by lane with its failures per lane. And row_sum (support/row_sum.hpp):
+// −Σ c_e x_e over rows of every length from 1 to 13, in native lanes and one number at a time,
+// against the plain sum, at run time and in a constant expression.
 #include <array>
 #include <bit>
 #include <cmath>
@@ -18,6 +20,7 @@
 #include <ctga/scenes/body_kinds.hpp>
 #include <ctga/support/math.hpp>
 #include <ctga/support/pack.hpp>
+#include <ctga/support/row_sum.hpp>
 
 #include "support/catch.hpp"
 
@@ -224,3 +227,60 @@ TEST_CASE("pack: renormalize_checked lane by lane: a NaN lane and a zero rotor r
     for (std::size_t c = 0; c < 8; ++c) CHECK(std::isnan(r.value[c][2]));
 }
 
+
+namespace {
+// row_sum<T, Count, L> against the plain loop −Σ_e c_e x_e[i] (rows of a 5 × 16 table), by each()
+// and by store(); every entry within 4 ulp of the sum of magnitudes (the order of operations is the
+// same; a target that fuses the multiply-adds rounds less).
+template <class T, std::size_t Count, std::size_t L>
+void check_row_sum(const std::array<std::array<T, 16>, 5>& x, const std::array<T, 5>& c) {
+    ctga::row_sum<T, Count, L> s;
+    for (std::size_t e = 0; e < 5; ++e) s.subtract(c[e], x[e].data());
+    std::array<T, Count> by_each{}, stored{};
+    std::size_t seen = 0;
+    s.each([&](std::size_t i, const T& v) {
+        CHECK(i == seen++);  // in order, each once
+        by_each[i] = v;
+    });
+    CHECK(seen == Count);
+    s.store(stored.data());
+    for (std::size_t i = 0; i < Count; ++i) {
+        T plain = T(0), size = T(0);
+        for (std::size_t e = 0; e < 5; ++e) {
+            plain -= c[e] * x[e][i];
+            size += std::abs(c[e] * x[e][i]);
+        }
+        const T tol = 4 * std::numeric_limits<T>::epsilon() * size;
+        CHECK(std::abs(by_each[i] - plain) <= tol);
+        CHECK(stored[i] == by_each[i]);
+    }
+}
+template <class T, std::size_t... Count>
+void check_row_sums(std::index_sequence<Count...>) {
+    std::mt19937_64 rng(29);
+    std::uniform_real_distribution<T> u(T(-2), T(2));
+    std::array<std::array<T, 16>, 5> x{};
+    std::array<T, 5> c{};
+    for (auto& row : x)
+        for (T& v : row) v = u(rng);
+    for (T& v : c) v = u(rng);
+    (check_row_sum<T, Count + 1, ctga::row_lanes<T>>(x, c), ...);
+    (check_row_sum<T, Count + 1, 1>(x, c), ...);
+}
+// In a constant expression (one number at a time): 1·(1, 2, 3) + 2·(4, 5, 6) subtracted.
+constexpr std::array<double, 3> constant_row_sum() {
+    const double x[2][3] = {{1, 2, 3}, {4, 5, 6}};
+    ctga::row_sum<double, 3, 1> s;
+    s.subtract(1, x[0]);
+    s.subtract(2, x[1]);
+    std::array<double, 3> out{};
+    s.store(out.data());
+    return out;
+}
+static_assert(constant_row_sum() == std::array<double, 3>{-9, -12, -15}, "row_sum in a constant expression");
+}  // namespace
+
+TEST_CASE("row_sum: -sum c_e x_e for rows of 1 to 13 numbers, in native lanes and one at a time, as the plain sum") {
+    check_row_sums<double>(std::make_index_sequence<13>{});
+    check_row_sums<float>(std::make_index_sequence<13>{});
+}

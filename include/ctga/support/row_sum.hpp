@@ -71,7 +71,7 @@ private:
     CTGA_ALWAYS_INLINE constexpr void each(F& f, std::index_sequence<C...>, std::index_sequence<R...>) const noexcept {
         if constexpr (L == 1) (f(C, p[C]), ...);
         else
-            (..., [&] CTGA_INLINE_LAMBDA {
+            (..., [&]() CTGA_INLINE_LAMBDA {
                 for (std::size_t l = 0; l < L; ++l) f(L * C + l, p[C][l]);
             }());
         (f(L * packs + R, r[R]), ...);

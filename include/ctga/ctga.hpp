@@ -9,6 +9,7 @@
 //   geometry/     ready-made Cl(3,0,1) (namespace ctga::pga): points, lines, planes, motors
 //   mechanics/    the paper: algebras, screw, coscrew, motor, the inertias (mass properties,
 //                 representations, 6×6 matrices, momentum and energy, transforms), dynamics, convert
+//   collision/    shapes posed by their bodies' motors, their mass, the separation of two shapes
 //   integrators/  the motion-model interface, methods stepping any model, ctga's rigid-body model
 //   scenes/       body kinds, scenes of many bodies, batches
 //   chains/       kinematic trees: joints, the tree type, FK, RNEA, CRBA, ABA, Jacobians (one header
@@ -17,6 +18,7 @@
 
 #include "ctga/chains/algorithms.hpp"
 #include "ctga/chains/motion.hpp"
+#include "ctga/collision/narrowphase.hpp"
 #include "ctga/core.hpp"
 #include "ctga/geometry/pga.hpp"
 #include "ctga/integrators/integrate.hpp"

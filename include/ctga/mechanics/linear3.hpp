@@ -32,6 +32,19 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> add(const vec3<T>& a, const vec3<T>& b) noexcept {
     return {a[0] + b[0], a[1] + b[1], a[2] + b[2]};
 }
+template <class T>
+[[nodiscard]] constexpr vec3<T> sub(const vec3<T>& a, const vec3<T>& b) noexcept {
+    return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> scale(const T& s, const vec3<T>& a) noexcept {
+    return {s * a[0], s * a[1], s * a[2]};
+}
+// a + s b
+template <class T>
+[[nodiscard]] constexpr vec3<T> add_scaled(const vec3<T>& a, const T& s, const vec3<T>& b) noexcept {
+    return {a[0] + s * b[0], a[1] + s * b[1], a[2] + s * b[2]};
+}
 // Which entries of a 3×3 matrix are known at compile time to be 0, 1 or −1 (a shape): the rotation
 // of a joint whose frame is aligned with its parent's is a turn about one coordinate axis, with five
 // such entries, and that of a joint turned by multiples of π/2 the same turn with its rows moved

@@ -43,6 +43,10 @@ enum class error_code : unsigned char {
     limits_reversed,        // a joint limit with lower > upper
     negative_limit,         // a velocity or effort limit, a damping or a friction below zero
     unbounded,              // a bound needed (random_configuration) is infinite
+    non_positive_size,      // a shape's radius, half extent or half height ≤ 0 (collision/)
+    too_few_points,         // a convex hull of fewer than four points
+    coplanar_points,        // a convex hull of points on one plane (no volume)
+    degenerate_triangle,    // a mesh triangle of zero area (two vertices equal, or on a line)
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
@@ -77,6 +81,13 @@ enum class error_code : unsigned char {
         case error_code::unbounded:
             return "ctga: a position bound is infinite where a finite one is needed (a prismatic joint or a floating "
                    "base's position in random_configuration)";
+        case error_code::non_positive_size:
+            return "ctga: a shape's size must be positive (a sphere's, capsule's or cylinder's radius, a box's half "
+                   "extents, a cylinder's half height; a capsule's half height may be 0)";
+        case error_code::too_few_points: return "ctga: a convex hull needs at least four points";
+        case error_code::coplanar_points: return "ctga: a convex hull's points all lie on one plane (it has no volume)";
+        case error_code::degenerate_triangle:
+            return "ctga: a mesh triangle has zero area (two vertices equal, or all three on one line)";
         case error_code::zero_direction: return "ctga: an axis must have a direction (it is the zero vector)";
         case error_code::not_a_motor: return "ctga: not a rigid motion (g g* = 1 fails beyond rounding, or the rotor part is zero)";
         case error_code::did_not_converge:

@@ -1,0 +1,30 @@
+// separation_of(A, pose_A, B, pose_B): the separation (separation.hpp) of any two shape kinds,
+// chosen at compile time from the pair routines (`separation_between`, one per unordered pair, in
+// the family headers): the routine for (A, B), or the one for (B, A) seen from A (reversed). A
+// pair with no routine is a compile error naming it, not a run-time fallback: a scene compiles
+// only the routines of the kinds it can hold, and calls them without dispatch at run time.
+#pragma once
+
+#include "ctga/collision/primitive_pairs.hpp"
+#include "ctga/collision/separation.hpp"
+#include "ctga/mechanics/motor.hpp"
+
+namespace ctga::collision {
+namespace narrowphase_detail {
+template <class A, class B>
+inline constexpr bool no_routine = false;
+}
+
+template <class A, class B, class T>
+[[nodiscard]] constexpr separation<T> separation_of(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb) noexcept {
+    if constexpr (requires { separation_between(a, pa, b, pb); }) return separation_between(a, pa, b, pb);
+    else if constexpr (requires { separation_between(b, pb, a, pa); }) return reversed(separation_between(b, pb, a, pa));
+    else static_assert(narrowphase_detail::no_routine<A, B>, "ctga::collision::separation_of: no narrowphase routine for this pair of shape kinds");
+}
+// The same from the bodies' motors (their maps formed here: 31m 24a and a division each).
+template <class A, class B, class T>
+[[nodiscard]] constexpr separation<T> separation_of(const A& a, const motor<T>& ga, const B& b, const motor<T>& gb) noexcept {
+    return separation_of(a, map_of(ga), b, map_of(gb));
+}
+
+}  // namespace ctga::collision

@@ -1,0 +1,216 @@
+// Closed-form separations (separation.hpp) of the pairs whose answer is a formula: spheres and
+// capsules among themselves, a box and a sphere, and every bounded shape against a half-space.
+// Spheres and capsules are a point or a segment (the core) grown by the radius, so their
+// separation is that of the cores' closest points less the radii: a = closest point of core A,
+// b = of core B, δ = |b − a|, distance = δ − r_A − r_B, normal (b − a)/δ. This is exact also when
+// they overlap: A ⊕ (−B) is (core_A − core_B) grown by r_A + r_B, and the origin's depth in it is
+// r_A + r_B − δ. When the cores meet (δ = 0) the normal is any direction perpendicular to both.
+// Against a half-space with outward normal n through point o: distance = min over X of n·(x − o)
+// = n·(s − o) with s the support point of X along −n (its deepest point).
+// Plain 3-vectors: each formula is a handful of dot products (a sphere pair 3 subtractions, a dot
+// product, a square root and a division); points, planes and lines of ctga::pga add nothing here.
+#pragma once
+
+#include <cstddef>
+
+#include "ctga/collision/box.hpp"
+#include "ctga/collision/capsule.hpp"
+#include "ctga/collision/cylinder.hpp"
+#include "ctga/collision/half_space.hpp"
+#include "ctga/collision/separation.hpp"
+#include "ctga/collision/sphere.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/motor.hpp"
+
+namespace ctga::collision {
+namespace primitive_detail {
+
+template <class T>
+[[nodiscard]] constexpr T absolute(const T& x) noexcept {
+    return x < T(0) ? -x : x;
+}
+template <class T>
+[[nodiscard]] constexpr T clamp01(const T& x) noexcept {
+    return x < T(0) ? T(0) : x > T(1) ? T(1) : x;
+}
+
+// Two balls: centres a, b, radii ra, rb; `across` the normal to use when the centres coincide.
+template <class T>
+[[nodiscard]] constexpr separation<T> balls(const vec3<T>& a, const T& ra, const vec3<T>& b, const T& rb, const vec3<T>& across) noexcept {
+    const vec3<T> d = linear3::sub(b, a);
+    const T l = length(d);
+    const vec3<T> n = l > T(0) ? linear3::scale(T(1) / l, d) : across;
+    return {l - ra - rb, n, linear3::add_scaled(a, ra, n), linear3::add_scaled(b, -rb, n)};
+}
+
+// A unit vector perpendicular to u (u ≠ 0): u × the coordinate axis least aligned with u.
+template <class T>
+[[nodiscard]] constexpr vec3<T> perpendicular(const vec3<T>& u) noexcept {
+    const std::size_t k = absolute(u[0]) <= absolute(u[1]) && absolute(u[0]) <= absolute(u[2]) ? 0 : absolute(u[1]) <= absolute(u[2]) ? 1 : 2;
+    vec3<T> e{};
+    e[k] = T(1);
+    const vec3<T> p = linear3::cross(u, e);
+    return linear3::scale(T(1) / length(p), p);
+}
+
+// A capsule's core in the world: its centre and the half segment h · (body z axis).
+template <class T>
+struct segment {
+    vec3<T> centre, half;
+};
+template <class T>
+[[nodiscard]] constexpr segment<T> core_of(const capsule<T>& c, const motor_map<T>& pose) noexcept {
+    return {pose.t, linear3::scale(c.half_height, axis_of(pose, 2))};
+}
+
+// The closest point of segment s to point p: centre + τ half, τ = clamp((p − centre)·half / |half|², ±1).
+template <class T>
+[[nodiscard]] constexpr vec3<T> closest_on(const segment<T>& s, const vec3<T>& p) noexcept {
+    const T hh = linear3::dot(s.half, s.half);
+    if (!(hh > T(0))) return s.centre;
+    const T tau = T(2) * clamp01((linear3::dot(linear3::sub(p, s.centre), s.half) / hh + T(1)) / T(2)) - T(1);
+    return linear3::add_scaled(s.centre, tau, s.half);
+}
+
+// The closest points of two segments P(σ) = p0 + σ d1, Q(τ) = q0 + τ d2, σ, τ ∈ [0, 1]: minimise
+// |P − Q|² over σ for the unclamped τ(σ) = (d2·(P − q0))/|d2|², clamping each in turn (Ericson,
+// Real-Time Collision Detection, §5.1.9); parallel segments take σ = 0 (a closest pair, not the
+// only one).
+template <class T>
+struct closest_pair {
+    vec3<T> p, q;
+};
+template <class T>
+[[nodiscard]] constexpr closest_pair<T> closest_points(const segment<T>& A, const segment<T>& B) noexcept {
+    const vec3<T> p0 = linear3::sub(A.centre, A.half), q0 = linear3::sub(B.centre, B.half);
+    const vec3<T> d1 = linear3::scale(T(2), A.half), d2 = linear3::scale(T(2), B.half), r = linear3::sub(p0, q0);
+    const T a = linear3::dot(d1, d1), e = linear3::dot(d2, d2), f = linear3::dot(d2, r);
+    T s = T(0), t = T(0);
+    if (!(a > T(0)) && !(e > T(0))) {
+    } else if (!(a > T(0))) {
+        t = clamp01(f / e);
+    } else {
+        const T c = linear3::dot(d1, r);
+        if (!(e > T(0))) s = clamp01(-c / a);
+        else {
+            const T b = linear3::dot(d1, d2), denom = a * e - b * b;
+            s = denom > T(0) ? clamp01((b * f - c * e) / denom) : T(0);
+            t = (b * s + f) / e;
+            if (t < T(0)) t = T(0), s = clamp01(-c / a);
+            else if (t > T(1)) t = T(1), s = clamp01((b - c) / a);
+        }
+    }
+    return {linear3::add_scaled(p0, s, d1), linear3::add_scaled(q0, t, d2)};
+}
+
+// The normal when two cores meet: perpendicular to both segments (to the one that is not a point).
+template <class T>
+[[nodiscard]] constexpr vec3<T> across(const vec3<T>& u, const vec3<T>& v) noexcept {
+    const vec3<T> c = linear3::cross(u, v);
+    const T l = length(c);
+    if (l > T(0)) return linear3::scale(T(1) / l, c);
+    if (linear3::dot(u, u) > T(0)) return perpendicular(u);
+    if (linear3::dot(v, v) > T(0)) return perpendicular(v);
+    return {T(0), T(0), T(1)};
+}
+
+// Against a half-space: its outward normal n, the world support point s of the other shape along
+// −n; distance n·(s − o), point_a the foot of s on the boundary.
+template <class T>
+[[nodiscard]] constexpr separation<T> below(const motor_map<T>& plane, const vec3<T>& n, const vec3<T>& s) noexcept {
+    const T d = linear3::dot(n, linear3::sub(s, plane.t));
+    return {d, n, linear3::add_scaled(s, -d, n), s};
+}
+
+}  // namespace primitive_detail
+
+// ---- the pairs (A, B): the normal points from A to B --------------------------------------
+
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const sphere<T>& a, const motor_map<T>& pa, const sphere<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    return primitive_detail::balls(pa.t, a.radius, pb.t, b.radius, vec3<T>{T(0), T(0), T(1)});
+}
+
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const capsule<T>& a, const motor_map<T>& pa, const sphere<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    using namespace primitive_detail;
+    const segment<T> A = core_of(a, pa);
+    return balls(closest_on(A, pb.t), a.radius, pb.t, b.radius, across(A.half, vec3<T>{}));
+}
+
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const capsule<T>& a, const motor_map<T>& pa, const capsule<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    using namespace primitive_detail;
+    const segment<T> A = core_of(a, pa), B = core_of(b, pb);
+    const closest_pair<T> c = closest_points(A, B);
+    return balls(c.p, a.radius, c.q, b.radius, across(A.half, B.half));
+}
+
+// A box A and a sphere B: the sphere's centre c in the box's frame, clamped to the box, is the
+// box's closest point when c is outside; inside, the nearest face (least h_i − |c_i|) is the way
+// out, and the depth is that margin plus the radius.
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const box<T>& a, const motor_map<T>& pa, const sphere<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    const vec3<T> c = to_body(pa, pb.t);
+    vec3<T> q = c;
+    bool inside = true;
+    for (std::size_t i = 0; i < 3; ++i) {
+        if (c[i] > a.half[i]) q[i] = a.half[i], inside = false;
+        else if (c[i] < -a.half[i]) q[i] = -a.half[i], inside = false;
+    }
+    if (!inside) return primitive_detail::balls(to_world(pa, q), T(0), pb.t, b.radius, vec3<T>{T(0), T(0), T(1)});
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < 3; ++i)
+        if (a.half[i] - primitive_detail::absolute(c[i]) < a.half[k] - primitive_detail::absolute(c[k])) k = i;
+    const T side = c[k] < T(0) ? T(-1) : T(1);
+    q[k] = side * a.half[k];
+    const vec3<T> n = linear3::scale(side, axis_of(pa, k));
+    const T depth = a.half[k] - primitive_detail::absolute(c[k]);
+    return {-(depth + b.radius), n, to_world(pa, q), linear3::add_scaled(pb.t, -b.radius, n)};
+}
+
+// A half-space A and a bounded shape B: B's deepest point along −n.
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const sphere<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    const vec3<T> n = axis_of(pa, 2);
+    return primitive_detail::below(pa, n, linear3::add_scaled(pb.t, -b.radius, n));
+}
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const capsule<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    const vec3<T> n = axis_of(pa, 2);
+    const primitive_detail::segment<T> B = primitive_detail::core_of(b, pb);
+    const T side = linear3::dot(n, B.half) > T(0) ? T(-1) : T(1);  // the lower end
+    return primitive_detail::below(pa, n, linear3::add_scaled(linear3::add_scaled(B.centre, side, B.half), -b.radius, n));
+}
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const box<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    const vec3<T> n = axis_of(pa, 2);
+    vec3<T> s = pb.t;  // the corner lowest along n: each axis's half extent against n
+    for (std::size_t i = 0; i < 3; ++i) {
+        const vec3<T> e = axis_of(pb, i);
+        s = linear3::add_scaled(s, linear3::dot(n, e) > T(0) ? -b.half[i] : b.half[i], e);
+    }
+    return primitive_detail::below(pa, n, s);
+}
+// A cylinder's deepest point along −n: its lower rim's point farthest along −n, the part of −n
+// across the axis a made unit (n along the axis: the face's centre).
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const cylinder<T>& b,
+                                               const motor_map<T>& pb) noexcept {
+    const vec3<T> n = axis_of(pa, 2), a = axis_of(pb, 2);
+    const T k = linear3::dot(n, a);
+    vec3<T> s = linear3::add_scaled(pb.t, k > T(0) ? -b.half_height : b.half_height, a);
+    const vec3<T> radial = linear3::add_scaled(n, -k, a);
+    const T l = length(radial);
+    if (l > T(0)) s = linear3::add_scaled(s, -b.radius / l, radial);
+    return primitive_detail::below(pa, n, s);
+}
+
+}  // namespace ctga::collision

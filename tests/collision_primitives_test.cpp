@@ -1,0 +1,220 @@
+// The collision layer's shapes and closed-form pairs (collision/primitive_pairs.hpp) against an
+// independent brute-force reference (tests/support/collision_reference.hpp: support functions
+// maximised over directions, quadrature, in long double, written without reading the library's
+// collision code): signed distances, normals and witness points of every closed-form pair at
+// random sizes and poses, apart and overlapping, near the origin and 10⁴ m from it; the shapes'
+// mass properties against quadrature; bad sizes refused at construction.
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <random>
+#include <string_view>
+#include <utility>
+
+#include <ctga/collision/narrowphase.hpp>
+#include <ctga/mechanics/motor.hpp>
+
+#include "support/catch.hpp"
+#include "support/collision_reference.hpp"
+
+namespace {
+
+namespace co = ctga::collision;
+namespace ref = collision_ref;
+using ctga::vec3;
+
+// A random rigid motion as the library poses bodies (a motor), its map, and the same map for the
+// reference in long double. Translations uniform in a cube of half size `spread` about `centre`.
+struct posed {
+    ctga::motor_map<double> map;
+    ref::pose pose;
+};
+posed random_posed(std::mt19937_64& rng, const vec3<double>& centre, double spread) {
+    std::normal_distribution<double> n;
+    std::uniform_real_distribution<double> u(-spread, spread);
+    // a uniformly random rotation: a normally distributed quaternion made unit
+    std::array<double, 4> q{n(rng), n(rng), n(rng), n(rng)};
+    const double l = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+    for (double& x : q) x /= l;
+    const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(centre[0] + u(rng), centre[1] + u(rng), centre[2] + u(rng)),
+                                                     ctga::rotor<double>{q[0], q[1], q[2], q[3]});
+    posed p{ctga::map_of(g), {}};
+    for (std::size_t i = 0; i < 3; ++i) {
+        for (std::size_t j = 0; j < 3; ++j) p.pose.R[i][j] = p.map.R[i][j];
+        p.pose.t[i] = p.map.t[i];
+    }
+    return p;
+}
+
+// The library's shape and the reference's, with random sizes in [0.2, 1.2].
+struct sizes {
+    std::mt19937_64& rng;
+    double next() { return std::uniform_real_distribution<double>(0.2, 1.2)(rng); }
+};
+struct sphere_kind {
+    static auto make(sizes& s) {
+        const double r = s.next();
+        return std::pair{*co::make_sphere(r), ref::sphere{r}};
+    }
+};
+struct capsule_kind {
+    static auto make(sizes& s) {
+        const double r = s.next(), h = s.next();
+        return std::pair{*co::make_capsule(r, h), ref::capsule{r, h}};
+    }
+};
+struct box_kind {
+    static auto make(sizes& s) {
+        const double a = s.next(), b = s.next(), c = s.next();
+        return std::pair{*co::make_box(a, b, c), ref::box{{a, b, c}}};
+    }
+};
+struct cylinder_kind {
+    static auto make(sizes& s) {
+        const double r = s.next(), h = s.next();
+        return std::pair{*co::make_cylinder(r, h), ref::cylinder{r, h}};
+    }
+};
+struct half_space_kind {
+    static auto make(sizes&) { return std::pair{co::half_space<double>{}, ref::half_space{}}; }
+};
+
+double gap(const vec3<double>& a, const ref::vec3& b) {
+    double m = 0;
+    for (std::size_t i = 0; i < 3; ++i) m = std::max(m, std::abs(a[i] - static_cast<double>(b[i])));
+    return m;
+}
+
+// `count` random configurations of the pair (A, B) about `centre`, poses within ±0.6 and ±4.5 in
+// turn (the first mostly overlapping, the second mostly apart): the distance to 1e-12 (relative to the shapes' size, ~1, and to the pose's
+// magnitude: 1e-12 at 10⁴ m is ~1e4 ulp of the coordinates' own rounding... both within 1e-12 of
+// the reference); the normal when the reference's is unique (apart, or overlapping with one
+// deepest direction); the witness points on the shapes' surfaces with point_b − point_a = d n.
+template <class KA, class KB>
+void check_pair(std::size_t count, const vec3<double>& centre, std::uint64_t seed) {
+    std::mt19937_64 rng(seed);
+    sizes s{rng};
+    std::size_t apart = 0, overlapping = 0;
+    const double scale = 1 + std::abs(centre[0]) + std::abs(centre[1]) + std::abs(centre[2]);
+    for (std::size_t k = 0; k < count; ++k) {
+        const auto [a, ra] = KA::make(s);
+        const auto [b, rb] = KB::make(s);
+        const double spread = k % 2 == 0 ? 0.6 : 4.5;  // mostly overlapping, then mostly apart
+        const posed pa = random_posed(rng, centre, spread), pb = random_posed(rng, centre, spread);
+        const co::separation<double> got = co::separation_of(a, pa.map, b, pb.map);
+        const ref::distance_result want = ref::signed_distance(ra, pa.pose, rb, pb.pose);
+        CAPTURE(k, want.distance, got.distance);
+        CHECK(std::abs(got.distance - static_cast<double>(want.distance)) <= 1e-12 * scale);
+        (want.distance > 0 ? apart : overlapping) += 1;
+        // the normal: unique apart, and overlapping where the reference finds one deepest direction
+        if (want.distance > 1e-6 || want.witness_unique) CHECK(gap(got.normal, want.normal) <= 1e-8);
+        CHECK(std::abs(co::length(got.normal) - 1) <= 1e-15);
+        // the witness points: on the surfaces, and d n apart
+        const ref::vec3 wa{got.point_a[0], got.point_a[1], got.point_a[2]}, wb{got.point_b[0], got.point_b[1], got.point_b[2]};
+        CHECK(std::abs(static_cast<double>(ref::point_signed_distance(ra, pa.pose, wa))) <= 1e-12 * scale);
+        CHECK(std::abs(static_cast<double>(ref::point_signed_distance(rb, pb.pose, wb))) <= 1e-12 * scale);
+        for (std::size_t i = 0; i < 3; ++i)
+            CHECK(std::abs(got.point_b[i] - got.point_a[i] - got.distance * got.normal[i]) <= 1e-12 * scale);
+    }
+    // the draw covers both sides
+    CHECK(apart >= count / 10);
+    CHECK(overlapping >= count / 10);
+}
+
+template <class KA, class KB>
+void check_pair_near_and_far(std::uint64_t seed) {
+    check_pair<KA, KB>(40, {0, 0, 0}, seed);
+    check_pair<KA, KB>(20, {1e4, -1e4, 1e4}, seed + 1);
+}
+
+}  // namespace
+
+TEST_CASE("collision: closed-form pairs against the brute-force reference, apart and overlapping, near and 1e4 m away") {
+    check_pair_near_and_far<sphere_kind, sphere_kind>(1);
+    check_pair_near_and_far<capsule_kind, sphere_kind>(3);
+    check_pair_near_and_far<sphere_kind, capsule_kind>(5);  // the same routine, seen from the sphere
+    check_pair_near_and_far<capsule_kind, capsule_kind>(7);
+    check_pair_near_and_far<box_kind, sphere_kind>(9);
+    check_pair_near_and_far<half_space_kind, sphere_kind>(11);
+    check_pair_near_and_far<half_space_kind, capsule_kind>(13);
+    check_pair_near_and_far<half_space_kind, box_kind>(15);
+    check_pair_near_and_far<box_kind, half_space_kind>(17);
+    check_pair_near_and_far<half_space_kind, cylinder_kind>(19);
+}
+
+TEST_CASE("collision: a sphere inside a box leaves by the nearest face; crossing capsule cores part perpendicular to both") {
+    const ctga::motor_map<double> I{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
+    ctga::motor_map<double> P = I;
+    P.t = {0.1, -0.7, 0.2};  // nearest face y = −1 (margin 0.3)
+    const auto s = co::separation_of(*co::make_box(1.0, 1.0, 1.0), I, *co::make_sphere(0.25), P);
+    CHECK(s.distance == -(0.3 + 0.25));
+    CHECK(s.normal == vec3<double>{0, -1, 0});
+    // two capsules whose cores cross at the origin, along x and along y: depth r_a + r_b along ±z
+    const ctga::motor_map<double> X{{{{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}}}, {0, 0, 0}};  // body z along world x
+    const ctga::motor_map<double> Y{{{{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}}, {0, 0, 0}};  // body z along world y
+    const auto c = co::separation_of(*co::make_capsule(0.2, 1.0), X, *co::make_capsule(0.3, 1.0), Y);
+    CHECK(c.distance == -0.5);
+    CHECK(std::abs(std::abs(c.normal[2]) - 1) == 0);
+}
+
+TEST_CASE("collision: mass properties of the shapes against quadrature") {
+    std::mt19937_64 rng(23);
+    std::uniform_real_distribution<double> u(0.2, 1.5);
+    const auto same = [](const ctga::mass_properties<double>& got, const ref::mass_result& want) {
+        const double m = static_cast<double>(want.mass);
+        CHECK(std::abs(got.mass - m) <= 1e-13 * m);
+        for (std::size_t i = 0; i < 3; ++i) {
+            CHECK(std::abs(got.com[i] - static_cast<double>(want.com[i])) <= 1e-13);
+            for (std::size_t j = 0; j < 3; ++j)
+                CHECK(std::abs(got.inertia_c[i][j] - static_cast<double>(want.inertia_about_com[i][j])) <=
+                      1e-13 * static_cast<double>(want.inertia_about_com[0][0] + want.inertia_about_com[1][1] + want.inertia_about_com[2][2]));
+        }
+    };
+    for (int k = 0; k < 5; ++k) {
+        const double r = u(rng), h = u(rng), c = u(rng), rho = 100 * u(rng);
+        same(*co::mass_of(*co::make_sphere(r), rho), ref::mass_properties(ref::sphere{r}, rho));
+        same(*co::mass_of(*co::make_capsule(r, h), rho), ref::mass_properties(ref::capsule{r, h}, rho));
+        same(*co::mass_of(*co::make_cylinder(r, h), rho), ref::mass_properties(ref::cylinder{r, h}, rho));
+        same(*co::mass_of(*co::make_box(r, h, c), rho), ref::mass_properties(ref::box{{r, h, c}}, rho));
+    }
+    // a capsule of half height 0 is the sphere
+    const auto cap = *co::mass_of(*co::make_capsule(0.5, 0.0), 7.0);
+    const auto sph = *co::mass_of(*co::make_sphere(0.5), 7.0);
+    CHECK(std::abs(cap.mass - sph.mass) <= 1e-15 * sph.mass);
+    CHECK(std::abs(cap.inertia_c[0][0] - sph.inertia_c[0][0]) <= 1e-15 * sph.inertia_c[0][0]);
+    // a density that is not positive is refused as the mass it gives
+    CHECK(co::mass_of(*co::make_sphere(1.0), 0.0).error == ctga::error_code::non_positive_mass);
+}
+
+TEST_CASE("collision: bad sizes are refused at construction, naming what is wrong") {
+    using ctga::error_code;
+    const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    CHECK(co::make_sphere(0.0).error == error_code::non_positive_size);
+    CHECK(co::make_sphere(-1.0).error == error_code::non_positive_size);
+    CHECK(co::make_sphere(nan).error == error_code::non_finite);
+    CHECK(co::make_capsule(0.5, -0.1).error == error_code::non_positive_size);
+    CHECK(co::make_capsule(0.0, 1.0).error == error_code::non_positive_size);
+    CHECK(co::make_capsule(0.5, 0.0).error == error_code::none);  // a sphere
+    CHECK(co::make_capsule(inf, 1.0).error == error_code::non_finite);
+    CHECK(co::make_box(1.0, 0.0, 1.0).error == error_code::non_positive_size);
+    CHECK(co::make_box(1.0, 1.0, nan).error == error_code::non_finite);
+    CHECK(co::make_cylinder(1.0, 0.0).error == error_code::non_positive_size);
+    CHECK(co::make_cylinder(-inf, 1.0).error == error_code::non_finite);
+    CHECK(std::string_view(ctga::describe(error_code::non_positive_size)).find("radius") != std::string_view::npos);
+}
+
+TEST_CASE("collision: float shapes and queries") {
+    const ctga::motor_map<float> I{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
+    ctga::motor_map<float> P = I;
+    P.t = {0, 0, 0.75f};
+    const auto s = co::separation_of(co::half_space<float>{}, I, *co::make_capsule(0.25f, 1.0f), P);
+    CHECK(s.distance == -0.5f);  // the lower end at z = −0.25, less the radius
+    constexpr float d = [] {
+        const ctga::motor_map<float> J{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
+        ctga::motor_map<float> Q = J;
+        Q.t = {3, 4, 0};
+        return co::separation_of(*co::make_sphere(1.0f), J, *co::make_sphere(1.5f), Q).distance;
+    }();
+    static_assert(d == 2.5f, "separation_of in a constant expression");
+}

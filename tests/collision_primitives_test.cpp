@@ -218,3 +218,91 @@ TEST_CASE("collision: float shapes and queries") {
     }();
     static_assert(d == 2.5f, "separation_of in a constant expression");
 }
+
+namespace {
+// A motor map turning by θ about the body x axis and placing the origin at t (written out here, not
+// through the library's motor, so that the expected corners are independent of it).
+ctga::motor_map<double> turned_about_x(double theta, const vec3<double>& t) {
+    const double c = std::cos(theta), s = std::sin(theta);
+    return {{{{1, 0, 0}, {0, c, -s}, {0, s, c}}}, t};
+}
+const ctga::motor_map<double> ground{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
+}  // namespace
+
+TEST_CASE("collision: manifolds: a box resting flat gives its face's four corners, tilted onto an edge that edge's two") {
+    const co::box<double> b = *co::make_box(0.5, 0.3, 0.2);
+    // flat, 0.01 into the ground: the four corners of the bottom face (z = −0.2, ids without bit 2)
+    const ctga::motor_map<double> flat = turned_about_x(0, {1, 2, 0.19});
+    const co::manifold<double> m = co::contact_of(co::half_space<double>{}, ground, b, flat, 0.005);
+    REQUIRE(m.count == 4);
+    CHECK(m.normal == vec3<double>{0, 0, 1});
+    unsigned seen = 0;
+    for (std::size_t i = 0; i < m.count; ++i) {
+        const auto& p = m.points[i];
+        CHECK((p.id & 4u) == 0u);
+        seen |= 1u << p.id;
+        CHECK(std::abs(p.separation + 0.01) <= 1e-15);
+        CHECK(std::abs(p.point_b[0] - (1 + ((p.id & 1u) ? 0.5 : -0.5))) <= 1e-15);
+        CHECK(std::abs(p.point_b[1] - (2 + ((p.id & 2u) ? 0.3 : -0.3))) <= 1e-15);
+        CHECK(std::abs(p.point_a[2]) <= 1e-15);  // on the ground
+    }
+    CHECK(seen == 0b1111u);
+    // tilted by 0.3 rad about x onto the edge y = +0.3 (or −0.3): the two corners of the lowest edge
+    const double th = 0.3;
+    const double lowest = std::min({0.3 * std::sin(th) - 0.2 * std::cos(th), -0.3 * std::sin(th) - 0.2 * std::cos(th)});
+    const ctga::motor_map<double> tilted = turned_about_x(th, {0, 0, -lowest - 0.01});
+    const co::manifold<double> e = co::contact_of(co::half_space<double>{}, ground, b, tilted, 0.005);
+    REQUIRE(e.count == 2);
+    for (std::size_t i = 0; i < e.count; ++i) {
+        const auto& p = e.points[i];
+        // the corner's height from the rotation written out: y' z' of (±0.3, −0.2) turned by θ
+        const double y = (p.id & 2u) ? 0.3 : -0.3, z = (p.id & 4u) ? 0.2 : -0.2;
+        CHECK(std::abs(p.point_b[2] - (std::sin(th) * y + std::cos(th) * z - lowest - 0.01)) <= 1e-15);
+        CHECK(std::abs(p.separation + 0.01) <= 1e-15);
+    }
+    CHECK((e.points[0].id & 1u) != (e.points[1].id & 1u));  // the edge along x: both x ends
+    // a small motion keeps the features, so the ids
+    const co::manifold<double> later = co::contact_of(co::half_space<double>{}, ground, b, turned_about_x(1e-4, {1.001, 2, 0.1901}), 0.005);
+    REQUIRE(later.count == 4);
+    unsigned seen_later = 0;
+    for (std::size_t i = 0; i < later.count; ++i) seen_later |= 1u << later.points[i].id;
+    CHECK(seen_later == seen);
+    // apart by more than the margin: no point; within it: the face's four, speculative (> 0)
+    CHECK(co::contact_of(co::half_space<double>{}, ground, b, turned_about_x(0, {0, 0, 0.3}), 0.05).count == 0);
+    const co::manifold<double> near = co::contact_of(co::half_space<double>{}, ground, b, turned_about_x(0, {0, 0, 0.22}), 0.05);
+    CHECK(near.count == 4);
+    CHECK(std::abs(near.points[0].separation - 0.02) <= 1e-15);
+    // seen from the box: the normal reversed, the witnesses swapped
+    const co::manifold<double> r = co::contact_of(b, flat, co::half_space<double>{}, ground, 0.005);
+    CHECK(r.normal == vec3<double>{-0.0, -0.0, -1});
+    CHECK(r.points[0].point_a == m.points[0].point_b);
+}
+
+TEST_CASE("collision: manifolds: a capsule lying down touches at both ends, two parallel capsules along their overlap") {
+    const co::capsule<double> c = *co::make_capsule(0.1, 0.5);
+    // lying along y (body z turned onto world y), 0.02 into the ground
+    const co::manifold<double> lying = co::contact_of(co::half_space<double>{}, ground, c, turned_about_x(-std::acos(0.0), {0, 0, 0.08}), 0.01);
+    REQUIRE(lying.count == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        CHECK(std::abs(lying.points[i].separation + 0.02) <= 1e-15);
+        CHECK(std::abs(std::abs(lying.points[i].point_b[1]) - 0.5) <= 1e-15);
+    }
+    // standing: one end
+    CHECK(co::contact_of(co::half_space<double>{}, ground, c, turned_about_x(0, {0, 0, 0.58}), 0.01).count == 1);
+    // two capsules side by side along x, 0.15 apart (radii 0.1 each), B shifted by 0.4 along x:
+    // the overlap of the cores x ∈ [−0.1, 0.5] (B's from −0.1 to 0.9), both ends at separation −0.05
+    const ctga::motor_map<double> along_x{{{{0, 0, 1}, {0, 1, 0}, {-1, 0, 0}}}, {0, 0, 0}};
+    ctga::motor_map<double> beside = along_x;
+    beside.t = {0.4, 0.15, 0};
+    const co::manifold<double> side = co::contact_of(c, along_x, c, beside, 0.01);
+    REQUIRE(side.count == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        CHECK(std::abs(side.points[i].separation + 0.05) <= 1e-15);
+        CHECK(std::abs(side.points[i].point_b[0] - (side.points[i].id == 0 ? -0.1 : 0.5)) <= 1e-15);
+    }
+    CHECK(std::abs(side.normal[1] - 1) <= 1e-15);
+    // crossing: one point
+    const co::manifold<double> cross = co::contact_of(c, along_x, c, turned_about_x(-std::acos(0.0), {0, 0, 0.15}), 0.01);
+    CHECK(cross.count == 1);
+    CHECK(std::abs(cross.points[0].separation + 0.05) <= 1e-15);
+}

@@ -371,41 +371,59 @@ private:
     real lip_, noise_;
 };
 
-// Fibonacci sphere with neighbour lists (all pairs closer than 2 spacings).
-struct direction_set {
-    std::vector<vec3> dirs;
-    std::vector<std::size_t> nb_begin, nb;
-    real spacing;
+// Cube-sphere grid: each face of the cube [-1,1]^3 is cut into n x n cells, equal in angle
+// (edges at a = tan(alpha), alpha uniform in [-pi/4, pi/4]); a cell is a rectangle
+// [a0,a1] x [b0,b1] of the face's gnomonic coordinates, the directions normalised(n + a e1 + b e2)
+// (a spherical quadrilateral with great-circle edges, so its vertices are its farthest points
+// from any direction inside it).
+struct grid_cell {
+    int face;
+    real a0, a1, b0, b1;
 };
-inline direction_set make_direction_set(std::size_t N) {
+inline vec3 cube_direction(int face, real a, real b) {
+    const auto i = static_cast<std::size_t>(face / 2);
+    vec3 w{0, 0, 0};
+    w[i] = face % 2 ? -1 : 1;
+    w[(i + 1) % 3] = a;
+    w[(i + 2) % 3] = b;
+    return normalized(w);
+}
+inline vec3 cell_centre(const grid_cell& q) { return cube_direction(q.face, (q.a0 + q.a1) / 2, (q.b0 + q.b1) / 2); }
+inline real cell_radius(const grid_cell& q, const vec3& c) {
+    real r = 0;
+    for (real a : {q.a0, q.a1})
+        for (real b : {q.b0, q.b1}) r = std::max(r, angle(c, cube_direction(q.face, a, b)));
+    return r * (1 + 1e-12L) + 1e-18L;
+}
+struct direction_set {
+    std::vector<grid_cell> cells;
+    std::vector<vec3> dirs;  // cell centres
+    std::vector<real> radius;
+    real spacing;            // sqrt(4 pi / number of cells)
+};
+inline direction_set make_direction_set(int n) {
     direction_set s;
-    s.dirs.resize(N);
-    const real golden = pi * (3 - std::sqrt(real(5)));
-    for (std::size_t i = 0; i < N; ++i) {
-        const real z = 1 - (2 * static_cast<real>(i) + 1) / static_cast<real>(N);
-        const real r = std::sqrt(std::max<real>(0, 1 - z * z));
-        const real phi = std::fmod(static_cast<real>(i) * golden, 2 * pi);
-        s.dirs[i] = {r * std::cos(phi), r * std::sin(phi), z};
-    }
-    s.spacing = std::sqrt(4 * pi / static_cast<real>(N));
-    const real rad = 2 * s.spacing, cmin = std::cos(rad);
-    const auto win = static_cast<std::size_t>(rad * static_cast<real>(N) / 2) + 2;
-    s.nb_begin.resize(N + 1);
-    for (std::size_t i = 0; i < N; ++i) {
-        s.nb_begin[i] = s.nb.size();
-        const std::size_t j0 = i > win ? i - win : 0, j1 = std::min(N, i + win + 1);
-        for (std::size_t j = j0; j < j1; ++j)
-            if (j != i && dot(s.dirs[i], s.dirs[j]) >= cmin) s.nb.push_back(j);
-    }
-    s.nb_begin[N] = s.nb.size();
+    std::vector<real> edge(static_cast<std::size_t>(n) + 1);
+    for (int k = 0; k <= n; ++k)
+        edge[static_cast<std::size_t>(k)] = std::tan(pi / 2 * (static_cast<real>(k) / static_cast<real>(n) - 0.5L));
+    edge.front() = -1, edge.back() = 1;
+    for (int f = 0; f < 6; ++f)
+        for (std::size_t i = 0; i + 1 < edge.size(); ++i)
+            for (std::size_t j = 0; j + 1 < edge.size(); ++j) {
+                const grid_cell q{f, edge[i], edge[i + 1], edge[j], edge[j + 1]};
+                s.cells.push_back(q);
+                s.dirs.push_back(cell_centre(q));
+                s.radius.push_back(cell_radius(q, s.dirs.back()));
+            }
+    s.spacing = std::sqrt(4 * pi / static_cast<real>(s.cells.size()));
     return s;
 }
-inline const direction_set& coarse_directions() {
-    static const direction_set s = make_direction_set(2000);
+inline const direction_set& coarse_directions() {  // 1,944 directions
+    static const direction_set s = make_direction_set(18);
     return s;
 }
-inline const direction_set& dense_directions() {
-    static const direction_set s = make_direction_set(20000);
+inline const direction_set& dense_directions() {  // 20,184 directions
+    static const direction_set s = make_direction_set(58);
     return s;
 }
 
@@ -605,72 +623,69 @@ optimum maximise(const P& pb) {
     const direction_set& ds = dense_directions();
     const std::size_t N = ds.dirs.size();
     std::vector<real> val(N), ub(N);
-    const real rho0 = 0.9L * ds.spacing;  // > the covering radius of the set (0.74 spacing)
     for (std::size_t i = 0; i < N; ++i) {
         const auto e = pb.eval(ds.dirs[i]);
         val[i] = e.F;
-        ub[i] = cap_upper_bound(ds.dirs[i], e.F, e.s, rho0);
+        ub[i] = cap_upper_bound(ds.dirs[i], e.F, e.s, ds.radius[i]);
         consider(ds.dirs[i], val[i]);
     }
     const real W0 = 3 * ds.spacing;
     if (best.F > 0) return polish(pb, refine(pb, best, W0), W0);
 
-    // Overlapping: f has many local maxima. Refine the best few local maxima of the samples ...
-    std::vector<optimum> cand;
-    for (std::size_t i = 0; i < N; ++i) {
-        bool is_max = true;
-        for (std::size_t k = ds.nb_begin[i]; k < ds.nb_begin[i + 1] && is_max; ++k) {
-            const std::size_t j = ds.nb[k];
-            is_max = val[i] > val[j] || (val[i] == val[j] && i < j);
-        }
-        if (is_max) cand.push_back({ds.dirs[i], val[i]});
-    }
-    for (const vec3& u : specials) cand.push_back({u, pb.value(u)});
-    std::stable_sort(cand.begin(), cand.end(), [](const optimum& x, const optimum& y) { return x.F > y.F; });
+    // Overlapping: f has many local maxima. Refine from the best two samples (at least four
+    // spacings apart) ...
+    std::vector<std::size_t> order(N);
+    for (std::size_t i = 0; i < N; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&val](std::size_t x, std::size_t y) { return val[x] > val[y]; });
     optimum o = best;
     std::vector<vec3> tried;
-    for (const optimum& c : cand) {
-        if (tried.size() >= 3) break;
-        bool dup = false;
-        for (const vec3& t : tried) dup = dup || angle(t, c.u) < 2 * ds.spacing;
-        if (dup) continue;
-        tried.push_back(c.u);
-        const optimum r = refine(pb, c, W0);
+    for (const vec3& u : specials)  // exact optima of aligned configurations
+        if (pb.value(u) == best.F) {
+            o = refine(pb, {u, best.F}, W0);
+            tried.push_back(u);
+            break;
+        }
+    for (std::size_t k = 0; k < N && tried.size() < 2; ++k) {
+        const vec3& u = ds.dirs[order[k]];
+        bool near = false;
+        for (const vec3& t : tried) near = near || angle(t, u) < 4 * ds.spacing;
+        if (near) continue;
+        tried.push_back(u);
+        const optimum r = refine(pb, {u, val[order[k]]}, W0);
         if (r.F > o.F) o = r;
     }
-    // ... then branch and bound on caps: a cap whose upper bound does not exceed the best value
-    // is discarded, the others are covered by 7 caps of half the radius (a disc of radius 2 is
-    // covered by 7 unit discs: the centre and six at distance sqrt 3); a sample better than the
-    // best restarts the local refinement from it. Stops when the surviving caps lie within 1e-7
-    // of the best direction, or (flat optima: everything survives) beyond 3,000 caps or radius
-    // 1e-12.
+    // ... then branch and bound over the grid's cells: a cell whose upper bound (cap_upper_bound
+    // over its circumscribed cap) does not exceed the best value is discarded, the others are
+    // cut into four; a centre better than the best restarts the local refinement from it. Stops
+    // when the surviving cells lie within 1e-7 of the best direction (then the refinement around
+    // it, exact to second order on brackets that small, holds the maximum), or, for flat optima
+    // where everything survives, beyond 3,000 cells or below a radius of 1e-12.
     struct cell {
+        grid_cell q;
         vec3 c;
-        real ub;
+        real rho;
     };
     std::vector<cell> cells;
     for (std::size_t i = 0; i < N; ++i)
-        if (ub[i] > o.F + noise) cells.push_back({ds.dirs[i], ub[i]});
-    real rho = rho0;
-    while (!cells.empty() && cells.size() <= 3000 && rho > 1e-12L) {
-        real spread = 0;
-        for (const cell& c : cells) spread = std::max(spread, angle(c.c, o.u) + rho);
-        if (spread <= 1e-7L) break;
-        const real crho = rho / 2 * 1.02L, off = std::sqrt(real(3)) / 2 * rho;
-        std::vector<cell> next;
-        optimum bc{{0, 0, 1}, -std::numeric_limits<real>::infinity()};
-        std::vector<std::pair<vec3, typename P::eval_t>> kids;
+        if (ub[i] > o.F + noise) cells.push_back({ds.cells[i], ds.dirs[i], ds.radius[i]});
+    for (int level = 0; level < 60 && !cells.empty() && cells.size() <= 3000; ++level) {
+        real spread = 0, rmax = 0;
         for (const cell& c : cells) {
-            const chart ch = make_chart(c.c);
-            for (int k = 0; k < 7; ++k) {
-                vec3 u = c.c;
-                if (k > 0) {
-                    const real phi = pi / 3 * static_cast<real>(k - 1);
-                    const vec3 t = add(mul(std::cos(phi), ch.e1), mul(std::sin(phi), ch.e2));
-                    u = normalized(add(mul(std::cos(off), c.c), mul(std::sin(off), t)));
-                }
+            spread = std::max(spread, angle(c.c, o.u) + c.rho);
+            rmax = std::max(rmax, c.rho);
+        }
+        if (spread <= 1e-7L || rmax < 1e-12L) break;
+        std::vector<std::pair<cell, typename P::eval_t>> kids;
+        optimum bc{{0, 0, 1}, -std::numeric_limits<real>::infinity()};
+        for (const cell& c : cells) {
+            const real am = (c.q.a0 + c.q.a1) / 2, bm = (c.q.b0 + c.q.b1) / 2;
+            for (int k = 0; k < 4; ++k) {
+                grid_cell q = c.q;
+                (k & 1 ? q.a0 : q.a1) = am;
+                (k & 2 ? q.b0 : q.b1) = bm;
+                const vec3 u = cell_centre(q);
                 const auto e = pb.eval(u);
-                kids.push_back({u, e});
+                kids.push_back({{q, u, cell_radius(q, u)}, e});
                 if (e.F > bc.F) bc = {u, e.F};
             }
         }
@@ -678,12 +693,9 @@ optimum maximise(const P& pb) {
             const optimum r = refine(pb, bc, W0);
             o = r.F > bc.F ? r : bc;
         }
-        for (const auto& [u, e] : kids) {
-            const real b = cap_upper_bound(u, e.F, e.s, crho);
-            if (b > o.F + noise) next.push_back({u, b});
-        }
-        cells = std::move(next);
-        rho = crho;
+        cells.clear();
+        for (const auto& [c, e] : kids)
+            if (cap_upper_bound(c.c, e.F, e.s, c.rho) > o.F + noise) cells.push_back(c);
     }
     if (best.F > o.F) o = refine(pb, best, W0);  // never worse than the samples
     return polish(pb, o, W0);

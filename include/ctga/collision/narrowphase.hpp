@@ -3,8 +3,13 @@
 // the family headers): the routine for (A, B), or the one for (B, A) seen from A (reversed). A
 // pair with no routine is a compile error naming it, not a run-time fallback: a scene compiles
 // only the routines of the kinds it can hold, and calls them without dispatch at run time.
+// contact_of(A, pose_A, B, pose_B, margin): their contact manifold (manifold.hpp), by the pair's
+// manifold routine where it touches along more than a point (primitive_manifolds.hpp), else the
+// one point of the separation; points farther apart than the margin are left out.
 #pragma once
 
+#include "ctga/collision/manifold.hpp"
+#include "ctga/collision/primitive_manifolds.hpp"
 #include "ctga/collision/primitive_pairs.hpp"
 #include "ctga/collision/separation.hpp"
 #include "ctga/mechanics/motor.hpp"
@@ -25,6 +30,18 @@ template <class A, class B, class T>
 template <class A, class B, class T>
 [[nodiscard]] constexpr separation<T> separation_of(const A& a, const motor<T>& ga, const B& b, const motor<T>& gb) noexcept {
     return separation_of(a, map_of(ga), b, map_of(gb));
+}
+
+template <class A, class B, class T>
+[[nodiscard]] constexpr manifold<T> contact_of(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb, const T& margin) noexcept {
+    if constexpr (requires { manifold_between(a, pa, b, pb, margin); }) return manifold_between(a, pa, b, pb, margin);
+    else if constexpr (requires { manifold_between(b, pb, a, pa, margin); }) return reversed(manifold_between(b, pb, a, pa, margin));
+    else {
+        const separation<T> s = separation_of(a, pa, b, pb);
+        manifold<T> m{s.normal, 0, {}};
+        if (s.distance <= margin) m.add({s.point_a, s.point_b, s.distance, 0});
+        return m;
+    }
 }
 
 }  // namespace ctga::collision

@@ -399,10 +399,12 @@ struct direction_set {
     std::vector<grid_cell> cells;
     std::vector<vec3> dirs;  // cell centres
     std::vector<real> radius;
+    std::size_t n;           // cells per face edge; cell (face f, row i, column j) is f n^2 + i n + j
     real spacing;            // sqrt(4 pi / number of cells)
 };
 inline direction_set make_direction_set(int n) {
     direction_set s;
+    s.n = static_cast<std::size_t>(n);
     std::vector<real> edge(static_cast<std::size_t>(n) + 1);
     for (int k = 0; k <= n; ++k)
         edge[static_cast<std::size_t>(k)] = std::tan(pi / 2 * (static_cast<real>(k) / static_cast<real>(n) - 0.5L));
@@ -596,12 +598,42 @@ optimum polish(const P& pb, optimum o, real W0) {
     return o;
 }
 
-// Upper bound of f over the cap of angular radius rho around the unit vector c, from f's value
-// F and the support point s of D there: -h_D is concave on R^3, so f(u) <= -s.u for every u,
-// and for angle(u, c) = theta <= rho, -s.u = cos(theta) F - sin(theta) s.t <= ... below.
-inline real cap_upper_bound(const vec3& c, real F, const vec3& s, real rho) {
+// Upper bounds of f over the cap of angular radius rho around the unit vector c. -h_D is
+// concave on R^3, so f(u) <= -s.u for every point s of D and every u; for s a support point
+// of D at c (f(c) = F = -s.c) and angle(u, c) = theta <= rho <= pi/2, with t the part of s
+// orthogonal to c: -s.u = cos(theta) F - sin(theta) (s.t-direction) <= bound below.
+struct cap {
+    real cos_rho, sin_rho;
+    explicit cap(real rho) : cos_rho(std::cos(rho)), sin_rho(std::sin(rho)) {}
+};
+inline real cap_upper_bound(const vec3& c, real F, const vec3& s, const cap& k) {
     const real st = norm(sub(s, mul(dot(s, c), c)));
-    return F + (F < 0 ? (1 - std::cos(rho)) * -F : real(0)) + std::sin(rho) * st;
+    return (F < 0 ? k.cos_rho * F : F) + k.sin_rho * st;
+}
+// The same with any point of the segment [s0, s1] of D (support points at c and at a
+// neighbouring direction): lambda chosen to minimise the bound, which is then evaluated exactly.
+// Across a kink of f (two sides with different support points) this is much tighter.
+inline real pair_upper_bound(const vec3& c, const vec3& s0, const vec3& s1, const cap& cp) {
+    const vec3 ds = sub(s1, s0);
+    const vec3 t0 = sub(s0, mul(dot(s0, c), c)), dt = sub(ds, mul(dot(ds, c), c));
+    const real beta = -cp.cos_rho * dot(ds, c), sigma = cp.sin_rho, ndt = norm(dt);
+    real lambda;
+    if (!(sigma * ndt > 0)) {
+        lambda = beta > 0 ? 0 : 1;
+    } else {
+        const real k = beta / (sigma * ndt);
+        if (k >= 1) {
+            lambda = 0;
+        } else if (k <= -1) {
+            lambda = 1;
+        } else {
+            const vec3 e = mul(1 / ndt, dt);
+            const real q = dot(t0, e), p = norm(sub(t0, mul(q, e)));
+            lambda = std::clamp<real>((-k * p / std::sqrt(1 - k * k) - q) / ndt, 0, 1);
+        }
+    }
+    const vec3 sb = add(s0, mul(lambda, ds));
+    return cap_upper_bound(c, -dot(sb, c), sb, cp);
 }
 
 // max over unit u of f(u)
@@ -622,11 +654,12 @@ optimum maximise(const P& pb) {
     }
     const direction_set& ds = dense_directions();
     const std::size_t N = ds.dirs.size();
-    std::vector<real> val(N), ub(N);
+    std::vector<real> val(N);
+    std::vector<vec3> sup(N);
     for (std::size_t i = 0; i < N; ++i) {
         const auto e = pb.eval(ds.dirs[i]);
         val[i] = e.F;
-        ub[i] = cap_upper_bound(ds.dirs[i], e.F, e.s, ds.radius[i]);
+        sup[i] = e.s;
         consider(ds.dirs[i], val[i]);
     }
     const real W0 = 3 * ds.spacing;
@@ -662,12 +695,19 @@ optimum maximise(const P& pb) {
     // where everything survives, beyond 3,000 cells or below a radius of 1e-12.
     struct cell {
         grid_cell q;
-        vec3 c;
-        real rho;
+        vec3 c, s;  // centre, support point of D there
+        real rho;   // circumscribed cap
     };
     std::vector<cell> cells;
-    for (std::size_t i = 0; i < N; ++i)
-        if (ub[i] > o.F + noise) cells.push_back({ds.cells[i], ds.dirs[i], ds.radius[i]});
+    const std::size_t n = ds.n;
+    for (std::size_t i = 0; i < N; ++i) {
+        const cap cp(ds.radius[i]);
+        real b = cap_upper_bound(ds.dirs[i], val[i], sup[i], cp);
+        const std::size_t a = (i / n) % n, c = i % n;
+        for (std::size_t j : {a > 0 ? i - n : i, a + 1 < n ? i + n : i, c > 0 ? i - 1 : i, c + 1 < n ? i + 1 : i})
+            if (j != i && b > o.F + noise) b = std::min(b, pair_upper_bound(ds.dirs[i], sup[i], sup[j], cp));
+        if (b > o.F + noise) cells.push_back({ds.cells[i], ds.dirs[i], sup[i], ds.radius[i]});
+    }
     for (int level = 0; level < 60 && !cells.empty() && cells.size() <= 3000; ++level) {
         real spread = 0, rmax = 0;
         for (const cell& c : cells) {
@@ -675,7 +715,8 @@ optimum maximise(const P& pb) {
             rmax = std::max(rmax, c.rho);
         }
         if (spread <= 1e-7L || rmax < 1e-12L) break;
-        std::vector<std::pair<cell, typename P::eval_t>> kids;
+        std::vector<cell> kids;
+        std::vector<real> kval;
         optimum bc{{0, 0, 1}, -std::numeric_limits<real>::infinity()};
         for (const cell& c : cells) {
             const real am = (c.q.a0 + c.q.a1) / 2, bm = (c.q.b0 + c.q.b1) / 2;
@@ -685,7 +726,8 @@ optimum maximise(const P& pb) {
                 (k & 2 ? q.b0 : q.b1) = bm;
                 const vec3 u = cell_centre(q);
                 const auto e = pb.eval(u);
-                kids.push_back({{q, u, cell_radius(q, u)}, e});
+                kids.push_back({q, u, e.s, cell_radius(q, u)});
+                kval.push_back(e.F);
                 if (e.F > bc.F) bc = {u, e.F};
             }
         }
@@ -693,9 +735,18 @@ optimum maximise(const P& pb) {
             const optimum r = refine(pb, bc, W0);
             o = r.F > bc.F ? r : bc;
         }
-        cells.clear();
-        for (const auto& [c, e] : kids)
-            if (cap_upper_bound(c.c, e.F, e.s, c.rho) > o.F + noise) cells.push_back(c);
+        std::vector<cell> next;
+        for (std::size_t k = 0; k < kids.size(); ++k) {
+            const cell& c = kids[k];
+            const cap cp(c.rho);
+            real b = cap_upper_bound(c.c, kval[k], c.s, cp);
+            const std::size_t g = k / 4 * 4;  // the siblings, then the parent
+            for (std::size_t j = g; j < g + 4 && b > o.F + noise; ++j)
+                if (j != k) b = std::min(b, pair_upper_bound(c.c, c.s, kids[j].s, cp));
+            if (b > o.F + noise) b = std::min(b, pair_upper_bound(c.c, c.s, cells[k / 4].s, cp));
+            if (b > o.F + noise) next.push_back(c);
+        }
+        cells = std::move(next);
     }
     if (best.F > o.F) o = refine(pb, best, W0);  // never worse than the samples
     return polish(pb, o, W0);

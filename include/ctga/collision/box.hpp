@@ -23,6 +23,17 @@ template <class T>
     return {box<T>{{a, b, c}}, error_code::none};
 }
 
+// The support point along u: the corner on u's side of each axis (+ where u's component is 0).
+// The box is its own core (radius 0).
+template <class T>
+[[nodiscard]] constexpr vec3<T> core_support(const box<T>& x, const vec3<T>& u) noexcept {
+    return {u[0] < T(0) ? -x.half[0] : x.half[0], u[1] < T(0) ? -x.half[1] : x.half[1], u[2] < T(0) ? -x.half[2] : x.half[2]};
+}
+template <class T>
+[[nodiscard]] constexpr T core_radius(const box<T>&) noexcept {
+    return T(0);
+}
+
 template <class T>
 [[nodiscard]] constexpr checked<mass_properties<T>> mass_of(const box<T>& x, const T& density) noexcept {
     const T a2 = x.half[0] * x.half[0], b2 = x.half[1] * x.half[1], c2 = x.half[2] * x.half[2];

@@ -29,6 +29,16 @@ template <class T>
     return {capsule<T>{radius, half_height}, error_code::none};
 }
 
+// The core: the segment; its support point along u is the end on u's side (the +z end when u ⟂ z).
+template <class T>
+[[nodiscard]] constexpr vec3<T> core_support(const capsule<T>& c, const vec3<T>& u) noexcept {
+    return {T(0), T(0), u[2] < T(0) ? -c.half_height : c.half_height};
+}
+template <class T>
+[[nodiscard]] constexpr T core_radius(const capsule<T>& c) noexcept {
+    return c.radius;
+}
+
 template <class T>
 [[nodiscard]] constexpr checked<mass_properties<T>> mass_of(const capsule<T>& c, const T& density) noexcept {
     const T r = c.radius, h = c.half_height, r2 = r * r;

@@ -25,6 +25,20 @@ template <class T>
     return {cylinder<T>{radius, half_height}, error_code::none};
 }
 
+// The support point along u: the rim point of the cap on u's side farthest along u's part across
+// the axis (the cap's centre when u is along the axis). Its own core (radius 0).
+template <class T>
+[[nodiscard]] constexpr vec3<T> core_support(const cylinder<T>& c, const vec3<T>& u) noexcept {
+    const T z = u[2] < T(0) ? -c.half_height : c.half_height;
+    const T l = math::sqrt(u[0] * u[0] + u[1] * u[1]);
+    if (!(l > T(0))) return {T(0), T(0), z};
+    return {c.radius * u[0] / l, c.radius * u[1] / l, z};
+}
+template <class T>
+[[nodiscard]] constexpr T core_radius(const cylinder<T>&) noexcept {
+    return T(0);
+}
+
 template <class T>
 [[nodiscard]] constexpr checked<mass_properties<T>> mass_of(const cylinder<T>& c, const T& density) noexcept {
     const T r2 = c.radius * c.radius, h = c.half_height;

@@ -25,6 +25,17 @@ template <class T>
     return {sphere<T>{radius}, error_code::none};
 }
 
+// The core (sphere.hpp, capsule.hpp: the shape is its core grown by its radius): a point, the
+// origin. Its support point in any direction is the origin.
+template <class T>
+[[nodiscard]] constexpr vec3<T> core_support(const sphere<T>&, const vec3<T>&) noexcept {
+    return {T(0), T(0), T(0)};
+}
+template <class T>
+[[nodiscard]] constexpr T core_radius(const sphere<T>& s) noexcept {
+    return s.radius;
+}
+
 template <class T>
 [[nodiscard]] constexpr checked<mass_properties<T>> mass_of(const sphere<T>& s, const T& density) noexcept {
     const T r2 = s.radius * s.radius;

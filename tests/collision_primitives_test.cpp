@@ -133,7 +133,7 @@ void check_pair_near_and_far(std::uint64_t seed) {
 
 }  // namespace
 
-TEST_CASE("collision: closed-form pairs against the brute-force reference, apart and overlapping, near and 1e4 m away") {
+TEST_CASE("collision: closed-form pairs and boxes against the brute-force reference, apart and overlapping, near and 1e4 m away") {
     check_pair_near_and_far<sphere_kind, sphere_kind>(1);
     check_pair_near_and_far<capsule_kind, sphere_kind>(3);
     check_pair_near_and_far<sphere_kind, capsule_kind>(5);  // the same routine, seen from the sphere
@@ -144,6 +144,7 @@ TEST_CASE("collision: closed-form pairs against the brute-force reference, apart
     check_pair_near_and_far<half_space_kind, box_kind>(15);
     check_pair_near_and_far<box_kind, half_space_kind>(17);
     check_pair_near_and_far<half_space_kind, cylinder_kind>(19);
+    check_pair_near_and_far<box_kind, box_kind>(21);  // GJK apart, the separating axes overlapping
 }
 
 TEST_CASE("collision: a sphere inside a box leaves by the nearest face; crossing capsule cores part perpendicular to both") {
@@ -350,4 +351,42 @@ TEST_CASE("collision: GJK distances of separated cores against the reference (bo
     check_gjk<box_kind, cylinder_kind>(30, {0, 0, 0}, 1e-9, 39);
     check_gjk<cylinder_kind, cylinder_kind>(30, {0, 0, 0}, 1e-9, 41);
     check_gjk<capsule_kind, cylinder_kind>(30, {0, 0, 0}, 1e-9, 43);
+}
+
+TEST_CASE("collision: manifolds: a box resting on a box gives its bottom corners, a big box on a small one the small one's top") {
+    const co::box<double> table = *co::make_box(2.0, 2.0, 0.5), small = *co::make_box(0.5, 0.3, 0.2);
+    // on top, 0.01 deep, turned by 0.4 rad about z: its four bottom corners, each 0.01 below the top face
+    const double c = std::cos(0.4), s = std::sin(0.4);
+    const ctga::motor_map<double> on_top{{{{c, -s, 0}, {s, c, 0}, {0, 0, 1}}}, {0.3, -0.2, 0.5 + 0.2 - 0.01}};
+    const co::manifold<double> m = co::contact_of(table, ground, small, on_top, 0.005);
+    REQUIRE(m.count == 4);
+    CHECK(std::abs(m.normal[2] - 1) <= 1e-15);
+    for (std::size_t i = 0; i < m.count; ++i) {
+        const auto& p = m.points[i];
+        CHECK(std::abs(p.separation + 0.01) <= 1e-15);
+        CHECK(std::abs(p.point_b[2] - 0.49) <= 1e-15);
+        CHECK(std::abs(p.point_a[2] - 0.5) <= 1e-15);
+        // a corner of the small box: (±0.5, ±0.3) turned by 0.4 about (0.3, −0.2)
+        const double x = p.point_b[0] - 0.3, y = p.point_b[1] + 0.2;
+        const double bx = c * x + s * y, by = -s * x + c * y;  // back into the small box's frame
+        CHECK(std::abs(std::abs(bx) - 0.5) <= 1e-14);
+        CHECK(std::abs(std::abs(by) - 0.3) <= 1e-14);
+    }
+    for (std::size_t i = 0; i < m.count; ++i)
+        for (std::size_t j = i + 1; j < m.count; ++j) CHECK(m.points[i].id != m.points[j].id);
+    // the table resting on the small box (upside down): the contact is the small box's top face,
+    // whose four corners are where the table's bottom face is clipped
+    const ctga::motor_map<double> below{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, -0.2 - 0.5 + 0.01}};
+    const co::manifold<double> u = co::contact_of(small, below, table, ground, 0.005);
+    REQUIRE(u.count == 4);
+    for (std::size_t i = 0; i < u.count; ++i) {
+        CHECK(std::abs(u.points[i].separation + 0.01) <= 1e-15);
+        CHECK(std::abs(std::abs(u.points[i].point_a[0]) - 0.5) <= 1e-15);
+        CHECK(std::abs(std::abs(u.points[i].point_a[1]) - 0.3) <= 1e-15);
+    }
+    // apart by more than the margin: nothing; seen from the other box: reversed
+    CHECK(co::contact_of(table, ground, small, ctga::motor_map<double>{on_top.R, {0.3, -0.2, 1.0}}, 0.005).count == 0);
+    const co::manifold<double> r = co::contact_of(small, on_top, table, ground, 0.005);
+    REQUIRE(r.count == 4);
+    CHECK(std::abs(r.normal[2] + 1) <= 1e-15);
 }

@@ -8,6 +8,7 @@
 // one point of the separation; points farther apart than the margin are left out.
 #pragma once
 
+#include "ctga/collision/box_pairs.hpp"
 #include "ctga/collision/manifold.hpp"
 #include "ctga/collision/primitive_manifolds.hpp"
 #include "ctga/collision/primitive_pairs.hpp"

@@ -1,0 +1,239 @@
+// Two boxes. Apart: GJK's distance and witnesses (gjk.hpp). Overlapping: the separating axis test
+// (Gottschalk, Lin and Manocha 1996): the Minkowski difference of two boxes is a convex polytope
+// whose face normals are the boxes' face normals a_i, b_j and the edge crossings a_i × b_j, so the
+// penetration depth is the least overlap r_A(L) + r_B(L) − |L·D| over those 15 unit axes L
+// (r_X(L) = Σ_i h_i |L·x_i|, D = t_B − t_A), exact, and n = ±L towards B.
+// The manifold of a face axis (Box2D's clipping, in three dimensions): the reference face (the
+// face of the axis) and the incident face of the other box (its face most against n); the incident
+// face's corners clipped by the reference face's four side planes (Sutherland–Hodgman) are the
+// candidates, kept within the margin, at most four (the deepest, the farthest from it, then the
+// two that span the most area). Each point's id is its features: the reference face (0–5: axis
+// 2i, + side 1), the incident face, and the corner (0–3) or the incident edge (4 + 4e) cut by side
+// plane p (+ p). An edge axis gives one point, the closest points of the two edges (id: bit 31,
+// the axes and the edges).
+// The separation's witnesses when overlapping are the manifold's deepest point.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+#include "ctga/collision/box.hpp"
+#include "ctga/collision/gjk.hpp"
+#include "ctga/collision/manifold.hpp"
+#include "ctga/collision/primitive_pairs.hpp"
+#include "ctga/collision/separation.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/motor.hpp"
+
+namespace ctga::collision {
+namespace box_detail {
+using primitive_detail::absolute;
+
+// The box's extent along unit L: Σ h_i |L·x_i|.
+template <class T>
+[[nodiscard]] constexpr T extent(const box<T>& b, const motor_map<T>& p, const vec3<T>& L) noexcept {
+    T r = T(0);
+    for (std::size_t i = 0; i < 3; ++i) r += b.half[i] * absolute(linear3::dot(L, axis_of(p, i)));
+    return r;
+}
+
+// The least-overlap axis: kind 0 a face of A (index i), 1 a face of B (j), 2 edges a_i × b_j.
+template <class T>
+struct axis_choice {
+    T depth;
+    vec3<T> normal;  // from A towards B
+    int kind;
+    std::size_t i, j;
+};
+template <class T>
+[[nodiscard]] constexpr axis_choice<T> least_overlap(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
+                                                    const motor_map<T>& pb) noexcept {
+    const vec3<T> D = linear3::sub(pb.t, pa.t);
+    axis_choice<T> best{T(0), {}, -1, 0, 0};
+    const auto consider = [&](const vec3<T>& L, int kind, std::size_t i, std::size_t j, const T& bias) {
+        const T s = linear3::dot(L, D);
+        const T depth = extent(a, pa, L) + extent(b, pb, L) - absolute(s);
+        // faces first: an edge axis wins only by more than `bias` (a relative 1e-9 of the sizes)
+        if (best.kind < 0 || depth + bias < best.depth) best = {depth, s < T(0) ? linear3::scale(T(-1), L) : L, kind, i, j};
+    };
+    const T size = extent(a, pa, axis_of(pa, 0)) + extent(b, pb, axis_of(pb, 0));
+    for (std::size_t i = 0; i < 3; ++i) consider(axis_of(pa, i), 0, i, 0, T(0));
+    for (std::size_t j = 0; j < 3; ++j) consider(axis_of(pb, j), 1, 0, j, T(0));
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t j = 0; j < 3; ++j) {
+            const vec3<T> c = linear3::cross(axis_of(pa, i), axis_of(pb, j));
+            const T l = length(c);
+            if (l > T(1e-6)) consider(linear3::scale(T(1) / l, c), 2, i, j, T(1e-9) * size);
+        }
+    return best;
+}
+
+// The face of box b (pose p) whose outward normal is most against n: axis k, side ±1.
+template <class T>
+struct face {
+    std::size_t axis;
+    T side;
+};
+template <class T>
+[[nodiscard]] constexpr face<T> most_against(const motor_map<T>& p, const vec3<T>& n) noexcept {
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < 3; ++i)
+        if (absolute(linear3::dot(n, axis_of(p, i))) > absolute(linear3::dot(n, axis_of(p, k)))) k = i;
+    return {k, linear3::dot(n, axis_of(p, k)) > T(0) ? T(-1) : T(1)};
+}
+template <class T>
+[[nodiscard]] constexpr std::uint32_t face_id(const face<T>& f) noexcept {
+    return static_cast<std::uint32_t>(2 * f.axis + (f.side > T(0) ? 1 : 0));
+}
+
+// A clipped corner: its position and its feature (corner 0–3, or 4 + 4 edge + side plane).
+template <class T>
+struct corner {
+    vec3<T> x;
+    std::uint32_t feature;
+};
+
+// Face manifold: reference box R (pose pr) with face axis i along n (n pointing away from R
+// towards the incident box I), incident box I.
+template <class T>
+[[nodiscard]] constexpr manifold<T> clip_faces(const box<T>& R, const motor_map<T>& pr, std::size_t i, const vec3<T>& n,
+                                               const box<T>& I, const motor_map<T>& pi, const T& margin) noexcept {
+    const face<T> ref{i, linear3::dot(n, axis_of(pr, i)) > T(0) ? T(1) : T(-1)};
+    const face<T> inc = most_against(pi, n);
+    // the incident face's corners, counter-clockwise order not needed: a cycle around the face
+    const std::size_t u = (inc.axis + 1) % 3, v = (inc.axis + 2) % 3;
+    const vec3<T> centre = linear3::add_scaled(pi.t, inc.side * I.half[inc.axis], axis_of(pi, inc.axis));
+    const vec3<T> eu = linear3::scale(I.half[u], axis_of(pi, u)), ev = linear3::scale(I.half[v], axis_of(pi, v));
+    constexpr int su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
+    std::array<corner<T>, 8> poly{}, next{};
+    std::size_t count = 4;
+    for (std::uint32_t c = 0; c < 4; ++c)
+        poly[c] = {linear3::add_scaled(linear3::add_scaled(centre, T(su[c]), eu), T(sv[c]), ev), c};
+    // clip by the reference face's four side planes: ±x_k · (x − t_R) ≤ h_k for the two other axes
+    std::uint32_t plane = 0;
+    for (std::size_t s = 1; s < 3; ++s) {
+        const std::size_t k = (i + s) % 3;
+        const vec3<T> axis = axis_of(pr, k);
+        for (int sign = -1; sign <= 1; sign += 2, ++plane) {
+            const auto outside = [&](const vec3<T>& x) { return T(sign) * linear3::dot(axis, linear3::sub(x, pr.t)) - R.half[k]; };
+            std::size_t m = 0;
+            for (std::size_t e = 0; e < count; ++e) {
+                const corner<T>& p = poly[e];
+                const corner<T>& q = poly[(e + 1) % count];
+                const T dp = outside(p.x), dq = outside(q.x);
+                if (dp <= T(0)) next[m++] = p;
+                if ((dp <= T(0)) != (dq <= T(0))) {
+                    const T t = dp / (dp - dq);
+                    const std::uint32_t edge = p.feature < 4 ? p.feature : ((p.feature - 4) / 4) % 4;
+                    next[m++] = {linear3::add_scaled(p.x, t, linear3::sub(q.x, p.x)), 4 + 4 * edge + plane};
+                }
+            }
+            poly = next;
+            count = m;
+        }
+    }
+    // candidates within the margin: separation along n from the reference face's plane
+    const T offset = linear3::dot(n, pr.t) + R.half[i];
+    std::array<contact_point<T>, 8> cand{};
+    std::size_t nc = 0;
+    for (std::size_t e = 0; e < count; ++e) {
+        const T sep = linear3::dot(n, poly[e].x) - offset;
+        if (sep <= margin)
+            cand[nc++] = {linear3::add_scaled(poly[e].x, -sep, n), poly[e].x, sep,
+                          face_id(ref) | (face_id(inc) << 3) | (poly[e].feature << 6)};
+    }
+    manifold<T> out{n, 0, {}};
+    if (nc <= 4) {
+        for (std::size_t e = 0; e < nc; ++e) out.add(cand[e]);
+        return out;
+    }
+    // four of them: the deepest, the farthest from it, the largest triangle, the largest on the other side
+    std::array<bool, 8> taken{};
+    const auto take = [&](std::size_t e) { taken[e] = true; out.add(cand[e]); };
+    std::size_t p1 = 0;
+    for (std::size_t e = 1; e < nc; ++e)
+        if ((cand[e].separation) < (cand[p1].separation)) p1 = e;
+    take(p1);
+    std::size_t p2 = nc;
+    T far = T(-1);
+    for (std::size_t e = 0; e < nc; ++e) {
+        const vec3<T> d = linear3::sub(cand[e].point_b, cand[p1].point_b);
+        if (!taken[e] && linear3::dot(d, d) > far) far = linear3::dot(d, d), p2 = e;
+    }
+    take(p2);
+    const vec3<T> base = linear3::sub(cand[p2].point_b, cand[p1].point_b);
+    const auto area = [&](std::size_t e) { return linear3::dot(n, linear3::cross(base, linear3::sub(cand[e].point_b, cand[p1].point_b))); };
+    std::size_t p3 = nc, p4 = nc;
+    for (std::size_t e = 0; e < nc; ++e) {
+        if (taken[e]) continue;
+        if (p3 == nc || area(e) > area(p3)) p3 = e;
+        if (p4 == nc || area(e) < area(p4)) p4 = e;
+    }
+    take(p3);
+    if (p4 != p3) take(p4);
+    return out;
+}
+
+// Edge manifold: the edges of A along a_i and of B along b_j that support n and −n; one point.
+template <class T>
+[[nodiscard]] constexpr manifold<T> edge_point(const box<T>& a, const motor_map<T>& pa, std::size_t i, const box<T>& b,
+                                               const motor_map<T>& pb, std::size_t j, const vec3<T>& n, const T& margin) noexcept {
+    const auto edge = [](const box<T>& x, const motor_map<T>& p, std::size_t k, const vec3<T>& d) {
+        vec3<T> centre = p.t;
+        std::uint32_t id = 0;
+        for (std::size_t m = 0; m < 3; ++m) {
+            if (m == k) continue;
+            const T s = linear3::dot(d, axis_of(p, m)) < T(0) ? T(-1) : T(1);
+            centre = linear3::add_scaled(centre, s * x.half[m], axis_of(p, m));
+            id = id * 2 + (s > T(0) ? 1u : 0u);
+        }
+        return std::pair{primitive_detail::segment<T>{centre, linear3::scale(x.half[k], axis_of(p, k))}, id};
+    };
+    const auto [ea, ida] = edge(a, pa, i, n);
+    const auto [eb, idb] = edge(b, pb, j, linear3::scale(T(-1), n));
+    const primitive_detail::closest_pair<T> c = primitive_detail::closest_points(ea, eb);
+    const T sep = linear3::dot(n, linear3::sub(c.q, c.p));
+    manifold<T> out{n, 0, {}};
+    if (sep <= margin)
+        out.add({c.p, c.q, sep, static_cast<std::uint32_t>((1u << 31) | ((3 * i + j) << 4) | (ida << 2) | idb)});
+    return out;
+}
+
+template <class T>
+[[nodiscard]] constexpr manifold<T> overlap_manifold(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
+                                                     const motor_map<T>& pb, const axis_choice<T>& ax, const T& margin) noexcept {
+    if (ax.kind == 0) return clip_faces(a, pa, ax.i, ax.normal, b, pb, margin);
+    if (ax.kind == 1) return reversed(clip_faces(b, pb, ax.j, linear3::scale(T(-1), ax.normal), a, pa, margin));
+    return edge_point(a, pa, ax.i, b, pb, ax.j, ax.normal, margin);
+}
+}  // namespace box_detail
+
+template <class T>
+[[nodiscard]] constexpr separation<T> separation_between(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
+                                                         const motor_map<T>& pb) noexcept {
+    const gjk_result<T> g = gjk(a, pa, b, pb, T(1e-14));
+    if (!g.overlap && g.distance > T(0)) {
+        const vec3<T> d = linear3::sub(g.point_b, g.point_a);
+        const T l = length(d);
+        return {l, linear3::scale(T(1) / l, d), g.point_a, g.point_b};
+    }
+    const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb);
+    const manifold<T> m = box_detail::overlap_manifold(a, pa, b, pb, ax, T(0));
+    if (m.count == 0) return {-ax.depth, ax.normal, pa.t, pb.t};  // (clipping lost every point: rounding)
+    std::size_t deepest = 0;
+    for (std::size_t e = 1; e < m.count; ++e)
+        if ((m.points[e].separation) < (m.points[deepest].separation)) deepest = e;
+    return {-ax.depth, ax.normal, m.points[deepest].point_a, m.points[deepest].point_b};
+}
+
+template <class T>
+[[nodiscard]] constexpr manifold<T> manifold_between(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
+                                                     const motor_map<T>& pb, const T& margin) noexcept {
+    const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb);
+    // apart by more than the margin along the best axis: no contact (a lower bound of the distance)
+    if (-ax.depth > margin) return manifold<T>{ax.normal, 0, {}};
+    return box_detail::overlap_manifold(a, pa, b, pb, ax, margin);
+}
+
+}  // namespace ctga::collision

@@ -38,7 +38,8 @@ posed random_posed(std::mt19937_64& rng, const vec3<double>& centre, double spre
     std::array<double, 4> q{n(rng), n(rng), n(rng), n(rng)};
     const double l = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
     for (double& x : q) x /= l;
-    const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(centre[0] + u(rng), centre[1] + u(rng), centre[2] + u(rng)),
+    const double x = u(rng), y = u(rng), z = u(rng);  // (drawn in order: the same poses with every compiler)
+    const ctga::motor<double> g = ctga::rigid_motion(ctga::make_translator(centre[0] + x, centre[1] + y, centre[2] + z),
                                                      ctga::rotor<double>{q[0], q[1], q[2], q[3]});
     posed p{ctga::map_of(g), {}};
     for (std::size_t i = 0; i < 3; ++i) {
@@ -89,7 +90,7 @@ double gap(const vec3<double>& a, const ref::vec3& b) {
     return m;
 }
 
-// `count` random configurations of the pair (A, B) about `centre`, poses within ±0.6 and ±4.5 in
+// `count` random configurations of the pair (A, B) about `centre`, poses within ±0.6 and ±8 in
 // turn (the first mostly overlapping, the second mostly apart): the distance to 1e-12 (relative to the shapes' size, ~1, and to the pose's
 // magnitude: 1e-12 at 10⁴ m is ~1e4 ulp of the coordinates' own rounding... both within 1e-12 of
 // the reference); the normal when the reference's is unique (apart, or overlapping with one
@@ -103,7 +104,7 @@ void check_pair(std::size_t count, const vec3<double>& centre, std::uint64_t see
     for (std::size_t k = 0; k < count; ++k) {
         const auto [a, ra] = KA::make(s);
         const auto [b, rb] = KB::make(s);
-        const double spread = k % 2 == 0 ? 0.6 : 4.5;  // mostly overlapping, then mostly apart
+        const double spread = k % 2 == 0 ? 0.6 : 8.0;  // mostly overlapping, then mostly apart
         const posed pa = random_posed(rng, centre, spread), pb = random_posed(rng, centre, spread);
         const co::separation<double> got = co::separation_of(a, pa.map, b, pb.map);
         const ref::distance_result want = ref::signed_distance(ra, pa.pose, rb, pb.pose);

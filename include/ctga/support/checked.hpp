@@ -47,6 +47,7 @@ enum class error_code : unsigned char {
     too_few_points,         // a convex hull of fewer than four points
     coplanar_points,        // a convex hull of points on one plane (no volume)
     degenerate_triangle,    // a mesh triangle of zero area (two vertices equal, or on a line)
+    capacity_exceeded,      // more items than the capacity given at construction (a broadphase's proxies)
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
@@ -88,6 +89,8 @@ enum class error_code : unsigned char {
         case error_code::coplanar_points: return "ctga: a convex hull's points all lie on one plane (it has no volume)";
         case error_code::degenerate_triangle:
             return "ctga: a mesh triangle has zero area (two vertices equal, or all three on one line)";
+        case error_code::capacity_exceeded:
+            return "ctga: more items than the capacity given at construction (a broadphase's proxies, a mesh's triangles)";
         case error_code::zero_direction: return "ctga: an axis must have a direction (it is the zero vector)";
         case error_code::not_a_motor: return "ctga: not a rigid motion (g g* = 1 fails beyond rounding, or the rotor part is zero)";
         case error_code::did_not_converge:

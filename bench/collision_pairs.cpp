@@ -1,0 +1,3 @@
+#include "collision_bench.hpp"
+
+void bench::collision::register_pairs() {}

@@ -69,7 +69,7 @@ static_assert(cost<decltype(twice_kinetic_energy), inertia, screw>.mul == publis
 static_assert(cost<decltype(coriolis), inertia, screw> == published<54, 42>, "Coriolis {s, A ∨ (N ∧ s)}: 54m 42a");
 static_assert(cost<decltype(sandwich), motor, screw4> == published<72, 58>, "g s g*: 72m 58a");
 static_assert(result_of<decltype(sandwich), motor, screw4>::size() == 6, "g s g* of a screw is a screw");
-// docs/design.md §2 walks examples/momentum.cpp: A ∨ (N ∧ s) with a diagonal N of six blades
+// docs/engine.md §0 walks examples/momentum.cpp: A ∨ (N ∧ s) with a diagonal N of six blades
 using example_inertia = G::mv<double, "a1ae1e", "a2ae2e", "a3ae3e", "a2a3e2e3", "a3a1e3e1", "a1a2e1e2">;
 static_assert(cost_of<decltype(A & (std::declval<const example_inertia&>() ^ std::declval<const screw&>()))> == published<6, 0>);
 // docs/engine.md §3: the Coriolis term multiplied out in full, with nothing staged

@@ -130,11 +130,16 @@ template <class S, class T>
 [[nodiscard]] constexpr vec3<T> world_support(const S& shape, const motor_map<T>& pose, const vec3<T>& d) noexcept {
     return to_world(pose, core_support(shape, linear3::apply_transposed(pose.R, d)));
 }
-}  // namespace gjk_detail
 
+// The run itself: its result, and its last simplex (a tetrahedron around the origin when the
+// cores overlap: EPA's start, epa.hpp).
+template <class T>
+struct run_result {
+    gjk_result<T> result;
+    simplex<T> last;
+};
 template <class A, class B, class T>
-[[nodiscard]] constexpr gjk_result<T> gjk(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb, const T& tolerance) noexcept {
-    using namespace gjk_detail;
+[[nodiscard]] constexpr run_result<T> run(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb, const T& tolerance) noexcept {
     const auto support = [&](const vec3<T>& d) {
         const vec3<T> sa = world_support(a, pa, d), sb = world_support(b, pb, linear3::scale(T(-1), d));
         return vertex<T>{linear3::sub(sa, sb), sa, sb};
@@ -150,24 +155,34 @@ template <class A, class B, class T>
     for (; step < 64; ++step) {
         const vec3<T> v = s.closest;
         const T vv = linear3::dot(v, v);
-        if (!(vv > T(0))) return {true, T(0), {}, {}, step};
+        if (!(vv > T(0))) return {{true, T(0), {}, {}, step}, s};
         const vertex<T> w = support(linear3::scale(T(-1), v));
         if (vv - linear3::dot(v, w.w) <= tolerance * vv) break;
         bool repeated = false;
         for (std::size_t i = 0; i < s.n; ++i) repeated = repeated || (s.v[i].a == w.a && s.v[i].b == w.b);
         if (repeated) break;
+        const simplex<T> before = s;
         s.v[s.n++] = w;
         if (s.n == 2) segment(s);
         else if (s.n == 3) triangle(s, 0, 1, 2);
-        else if (!tetrahedron(s)) return {true, T(0), {}, {}, step};
-        if (!(linear3::dot(s.closest, s.closest) < vv)) break;  // no progress: rounding
+        else if (!tetrahedron(s)) return {{true, T(0), {}, {}, step}, s};
+        if (!(linear3::dot(s.closest, s.closest) < vv)) {  // no progress (rounding): the one before stands
+            s = before;
+            break;
+        }
     }
     vec3<T> on_a{}, on_b{};
     for (std::size_t i = 0; i < s.n; ++i) {
         on_a = linear3::add_scaled(on_a, s.weight[i], s.v[i].a);
         on_b = linear3::add_scaled(on_b, s.weight[i], s.v[i].b);
     }
-    return {false, length(s.closest), on_a, on_b, step};
+    return {{false, length(s.closest), on_a, on_b, step}, s};
+}
+}  // namespace gjk_detail
+
+template <class A, class B, class T>
+[[nodiscard]] constexpr gjk_result<T> gjk(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb, const T& tolerance) noexcept {
+    return gjk_detail::run(a, pa, b, pb, tolerance).result;
 }
 
 }  // namespace ctga::collision

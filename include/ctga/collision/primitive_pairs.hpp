@@ -1,12 +1,12 @@
 // Closed-form separations (separation.hpp) of the pairs whose answer is a formula: spheres and
-// capsules among themselves, a box and a sphere, and every bounded shape against a half-space.
+// capsules among themselves, a box and a sphere (a half-space and any convex shape: convex_pairs.hpp).
 // Spheres and capsules are a point or a segment (the core) grown by the radius, so their
 // separation is that of the cores' closest points less the radii: a = closest point of core A,
 // b = of core B, δ = |b − a|, distance = δ − r_A − r_B, normal (b − a)/δ. This is exact also when
 // they overlap: A ⊕ (−B) is (core_A − core_B) grown by r_A + r_B, and the origin's depth in it is
 // r_A + r_B − δ. When the cores meet (δ = 0) the normal is any direction perpendicular to both.
 // Against a half-space with outward normal n through point o: distance = min over X of n·(x − o)
-// = n·(s − o) with s the support point of X along −n (its deepest point).
+// = n·(s − o) with s the support point of X along −n (its deepest point): `below`.
 // Plain 3-vectors: each formula is a handful of dot products (a sphere pair 3 subtractions, a dot
 // product, a square root and a division); points, planes and lines of ctga::pga add nothing here.
 #pragma once
@@ -171,46 +171,6 @@ template <class T>
     const vec3<T> n = linear3::scale(side, axis_of(pa, k));
     const T depth = a.half[k] - primitive_detail::absolute(c[k]);
     return {-(depth + b.radius), n, to_world(pa, q), linear3::add_scaled(pb.t, -b.radius, n)};
-}
-
-// A half-space A and a bounded shape B: B's deepest point along −n.
-template <class T>
-[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const sphere<T>& b,
-                                               const motor_map<T>& pb) noexcept {
-    const vec3<T> n = axis_of(pa, 2);
-    return primitive_detail::below(pa, n, linear3::add_scaled(pb.t, -b.radius, n));
-}
-template <class T>
-[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const capsule<T>& b,
-                                               const motor_map<T>& pb) noexcept {
-    const vec3<T> n = axis_of(pa, 2);
-    const primitive_detail::segment<T> B = primitive_detail::core_of(b, pb);
-    const T side = linear3::dot(n, B.half) > T(0) ? T(-1) : T(1);  // the lower end
-    return primitive_detail::below(pa, n, linear3::add_scaled(linear3::add_scaled(B.centre, side, B.half), -b.radius, n));
-}
-template <class T>
-[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const box<T>& b,
-                                               const motor_map<T>& pb) noexcept {
-    const vec3<T> n = axis_of(pa, 2);
-    vec3<T> s = pb.t;  // the corner lowest along n: each axis's half extent against n
-    for (std::size_t i = 0; i < 3; ++i) {
-        const vec3<T> e = axis_of(pb, i);
-        s = linear3::add_scaled(s, linear3::dot(n, e) > T(0) ? -b.half[i] : b.half[i], e);
-    }
-    return primitive_detail::below(pa, n, s);
-}
-// A cylinder's deepest point along −n: its lower rim's point farthest along −n, the part of −n
-// across the axis a made unit (n along the axis: the face's centre).
-template <class T>
-[[nodiscard]] constexpr separation<T> separation_between(const half_space<T>&, const motor_map<T>& pa, const cylinder<T>& b,
-                                               const motor_map<T>& pb) noexcept {
-    const vec3<T> n = axis_of(pa, 2), a = axis_of(pb, 2);
-    const T k = linear3::dot(n, a);
-    vec3<T> s = linear3::add_scaled(pb.t, k > T(0) ? -b.half_height : b.half_height, a);
-    const vec3<T> radial = linear3::add_scaled(n, -k, a);
-    const T l = length(radial);
-    if (l > T(0)) s = linear3::add_scaled(s, -b.radius / l, radial);
-    return primitive_detail::below(pa, n, s);
 }
 
 }  // namespace ctga::collision

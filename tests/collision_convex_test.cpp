@@ -147,3 +147,125 @@ TEST_CASE("collision: float hulls and convex pairs") {
     CHECK(std::abs(s.distance + 0.1f) <= 1e-5f);
     CHECK(std::abs(s.normal[0] - 1) <= 1e-5f);
 }
+
+namespace {
+ctga::motor_map<double> turned(double angle, std::size_t axis, const vec3<double>& t) {
+    const double c = std::cos(angle), s = std::sin(angle);
+    ctga::motor_map<double> p{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, t};
+    const std::size_t u = (axis + 1) % 3, v = (axis + 2) % 3;
+    p.R[u][u] = c, p.R[u][v] = -s, p.R[v][u] = s, p.R[v][v] = c;
+    return p;
+}
+co::convex_hull<double, 8> cube_hull(double hx, double hy, double hz) {
+    std::array<vec3<double>, 8> c{};
+    for (std::size_t i = 0; i < 8; ++i) c[i] = {(i & 1) ? hx : -hx, (i & 2) ? hy : -hy, (i & 4) ? hz : -hz};
+    return *co::make_hull(c);
+}
+// Every point: its witnesses d n apart, on the right surfaces (B's point at height `top` + its
+// separation when A is the support below, or as the caller checks).
+void check_points(const co::manifold<double>& m) {
+    for (std::size_t i = 0; i < m.count; ++i)
+        for (std::size_t k = 0; k < 3; ++k)
+            CHECK(std::abs(m.points[i].point_b[k] - m.points[i].point_a[k] - m.points[i].separation * m.normal[k]) <= 1e-14);
+}
+}  // namespace
+
+TEST_CASE("collision: manifolds of convex pairs: a hull resting flat on a box gives its face's corners, turned 45° the four best of eight") {
+    const auto table = *co::make_box(2.0, 2.0, 0.5);
+    const ctga::motor_map<double> ground{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, -0.5}};  // top face at z = 0
+    // a 0.6 × 0.4 × 0.2 hull box 1 mm into the table
+    const auto flat = co::contact_of(table, ground, cube_hull(0.3, 0.2, 0.1), turned(0, 2, {0.1, -0.2, 0.099}), 0.0);
+    REQUIRE(flat.count == 4);
+    CHECK(std::abs(flat.normal[2] - 1) <= 1e-15);
+    check_points(flat);
+    for (std::size_t i = 0; i < 4; ++i) {
+        CHECK(std::abs(flat.points[i].separation + 0.001) <= 1e-14);
+        CHECK(std::abs(std::abs(flat.points[i].point_b[0] - 0.1) - 0.3) <= 1e-14);
+        CHECK(std::abs(std::abs(flat.points[i].point_b[1] + 0.2) - 0.2) <= 1e-14);
+        CHECK(std::abs(flat.points[i].point_a[2]) <= 1e-15);
+        for (std::size_t j = i + 1; j < 4; ++j) CHECK(flat.points[i].id != flat.points[j].id);
+    }
+    // the same moved a little: the same ids
+    const auto moved = co::contact_of(table, ground, cube_hull(0.3, 0.2, 0.1), turned(0.001, 2, {0.1002, -0.2, 0.0995}), 0.0);
+    REQUIRE(moved.count == 4);
+    for (std::size_t i = 0; i < 4; ++i) {
+        bool found = false;
+        for (std::size_t j = 0; j < 4; ++j) found = found || moved.points[j].id == flat.points[i].id;
+        CHECK(found);
+    }
+    // a square hull turned 45° about z on a square hull of the same size: the octagon's four best
+    const double h = 0.5;
+    const auto oct = co::contact_of(cube_hull(h, h, h), turned(0, 2, {0, 0, -h}), cube_hull(h, h, h), turned(std::acos(-1.0) / 4, 2, {0, 0, h - 0.002}), 0.0);
+    REQUIRE(oct.count == 4);
+    check_points(oct);
+    for (std::size_t i = 0; i < 4; ++i) {
+        CHECK(std::abs(oct.points[i].separation + 0.002) <= 1e-14);
+        // on the octagon's boundary: inside both squares, on the side of one
+        const double x = oct.points[i].point_b[0], y = oct.points[i].point_b[1];
+        CHECK(std::max(std::abs(x), std::abs(y)) <= h + 1e-14);
+        CHECK((std::abs(x) + std::abs(y)) / std::sqrt(2.0) <= h + 1e-14);
+        CHECK(std::max(std::max(std::abs(x), std::abs(y)), (std::abs(x) + std::abs(y)) / std::sqrt(2.0)) >= h - 1e-14);
+    }
+}
+
+TEST_CASE("collision: manifolds of convex pairs: a capsule lying on a box touches at its two ends, a cylinder on its cap at four rim points and on its side at two") {
+    const auto table = *co::make_box(2.0, 2.0, 0.5);
+    const ctga::motor_map<double> ground{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, -0.5}};
+    const double half_pi = std::acos(0.0);
+    // a capsule of radius 0.1 and half length 0.4 along x, its core at height 0.098 (2 mm deep)
+    const auto lying = co::contact_of(table, ground, *co::make_capsule(0.1, 0.4), turned(half_pi, 1, {0.3, 0.2, 0.098}), 0.0);
+    REQUIRE(lying.count == 2);
+    check_points(lying);
+    for (std::size_t i = 0; i < 2; ++i) {
+        CHECK(std::abs(lying.points[i].separation + 0.002) <= 1e-14);
+        CHECK(std::abs(std::abs(lying.points[i].point_b[0] - 0.3) - 0.4) <= 1e-14);
+        CHECK(std::abs(lying.points[i].point_b[2] + 0.002) <= 1e-14);
+    }
+    CHECK(lying.points[0].id != lying.points[1].id);
+    // tilted by 1° about y: still both ends, the lower one deeper by 0.8 sin 1°
+    const auto tilted = co::contact_of(table, ground, *co::make_capsule(0.1, 0.4), turned(half_pi + 0.0174533, 1, {0, 0, 0.1}), 0.01);
+    REQUIRE(tilted.count == 2);
+    CHECK(std::abs(std::abs(tilted.points[0].separation - tilted.points[1].separation) - 0.8 * std::sin(0.0174533)) <= 1e-14);
+    // a cylinder (r 0.3, half height 0.2) standing 1 mm deep: its rim's four points at r from the axis
+    const auto standing = co::contact_of(table, ground, *co::make_cylinder(0.3, 0.2), turned(0.3, 2, {0.5, 0.5, 0.199}), 0.0);
+    REQUIRE(standing.count == 4);
+    check_points(standing);
+    for (std::size_t i = 0; i < 4; ++i) {
+        CHECK(std::abs(standing.points[i].separation + 0.001) <= 1e-14);
+        CHECK(std::abs(std::hypot(standing.points[i].point_b[0] - 0.5, standing.points[i].point_b[1] - 0.5) - 0.3) <= 1e-14);
+    }
+    // lying on its side along y: the two ends of its lowest line
+    const auto side = co::contact_of(table, ground, *co::make_cylinder(0.3, 0.2), turned(half_pi, 0, {0, 0, 0.299}), 0.0);
+    REQUIRE(side.count == 2);
+    for (std::size_t i = 0; i < 2; ++i) {
+        CHECK(std::abs(side.points[i].separation + 0.001) <= 1e-14);
+        CHECK(std::abs(std::abs(side.points[i].point_b[1]) - 0.2) <= 1e-14);
+    }
+    // two capsules crossed at right angles, one on the other: one point
+    const auto crossed = co::contact_of(*co::make_capsule(0.1, 0.5), turned(half_pi, 1, {0, 0, 0}), *co::make_capsule(0.1, 0.5),
+                                        turned(half_pi, 0, {0, 0, 0.19}), 0.0);
+    REQUIRE(crossed.count == 1);
+    CHECK(std::abs(crossed.points[0].separation + 0.01) <= 1e-14);
+}
+
+TEST_CASE("collision: manifolds on a half-space: a hull tilted by 1° keeps its face's four corners, each at its own depth; tilted 20°, its edge's two") {
+    const co::half_space<double> floor{};
+    const ctga::motor_map<double> ground{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
+    for (const double tilt : {0.0174533, 0.349066}) {
+        const ctga::motor_map<double> p = turned(tilt, 0, {0.2, 0.1, 0.1});
+        const auto m = co::contact_of(floor, ground, cube_hull(0.3, 0.2, 0.1), p, 0.1);
+        // the corners' heights, from the pose
+        std::vector<double> heights;
+        for (std::size_t c = 0; c < 8; ++c) {
+            const vec3<double> x{(c & 1) ? 0.3 : -0.3, (c & 2) ? 0.2 : -0.2, (c & 4) ? 0.1 : -0.1};
+            heights.push_back(co::to_world(p, x)[2]);
+        }
+        std::sort(heights.begin(), heights.end());
+        REQUIRE(m.count == (tilt < 0.1 ? 4u : 2u));
+        check_points(m);
+        std::vector<double> got;
+        for (std::size_t i = 0; i < m.count; ++i) got.push_back(m.points[i].separation);
+        std::sort(got.begin(), got.end());
+        for (std::size_t i = 0; i < m.count; ++i) CHECK(std::abs(got[i] - heights[i]) <= 1e-14);
+    }
+}

@@ -17,6 +17,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "ctga/collision/box.hpp"
 #include "ctga/collision/gjk.hpp"
@@ -144,34 +145,7 @@ template <class T>
                           face_id(ref) | (face_id(inc) << 3) | (poly[e].feature << 6)};
     }
     manifold<T> out{n, 0, {}};
-    if (nc <= 4) {
-        for (std::size_t e = 0; e < nc; ++e) out.add(cand[e]);
-        return out;
-    }
-    // four of them: the deepest, the farthest from it, the largest triangle, the largest on the other side
-    std::array<bool, 8> taken{};
-    const auto take = [&](std::size_t e) { taken[e] = true; out.add(cand[e]); };
-    std::size_t p1 = 0;
-    for (std::size_t e = 1; e < nc; ++e)
-        if ((cand[e].separation) < (cand[p1].separation)) p1 = e;
-    take(p1);
-    std::size_t p2 = nc;
-    T far = T(-1);
-    for (std::size_t e = 0; e < nc; ++e) {
-        const vec3<T> d = linear3::sub(cand[e].point_b, cand[p1].point_b);
-        if (!taken[e] && linear3::dot(d, d) > far) far = linear3::dot(d, d), p2 = e;
-    }
-    take(p2);
-    const vec3<T> base = linear3::sub(cand[p2].point_b, cand[p1].point_b);
-    const auto area = [&](std::size_t e) { return linear3::dot(n, linear3::cross(base, linear3::sub(cand[e].point_b, cand[p1].point_b))); };
-    std::size_t p3 = nc, p4 = nc;
-    for (std::size_t e = 0; e < nc; ++e) {
-        if (taken[e]) continue;
-        if (p3 == nc || area(e) > area(p3)) p3 = e;
-        if (p4 == nc || area(e) < area(p4)) p4 = e;
-    }
-    take(p3);
-    if (p4 != p3) take(p4);
+    add_best_four(out, std::span<const contact_point<T>>(cand.data(), nc));
     return out;
 }
 

@@ -12,6 +12,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <span>
 
 #include "ctga/mechanics/linear3.hpp"
 
@@ -35,6 +36,39 @@ struct manifold {
         if (count < points.size()) points[count++] = p;
     }
 };
+
+// Up to four of the candidate points (all of them when four or fewer): the deepest, the farthest
+// from it, then the two on either side of their line that span the largest triangles with it
+// (Box2D's reduction: the four that keep the most of the contact area).
+template <class T>
+constexpr void add_best_four(manifold<T>& out, std::span<const contact_point<T>> cand) noexcept {
+    const std::size_t nc = cand.size();
+    if (nc <= 4) {
+        for (const contact_point<T>& c : cand) out.add(c);
+        return;
+    }
+    std::size_t p1 = 0;
+    for (std::size_t e = 1; e < nc; ++e)
+        if ((cand[e].separation) < (cand[p1].separation)) p1 = e;
+    out.add(cand[p1]);
+    std::size_t p2 = nc;
+    T far = T(-1);
+    for (std::size_t e = 0; e < nc; ++e) {
+        const vec3<T> d = linear3::sub(cand[e].point_b, cand[p1].point_b);
+        if (e != p1 && linear3::dot(d, d) > far) far = linear3::dot(d, d), p2 = e;
+    }
+    out.add(cand[p2]);
+    const vec3<T> base = linear3::sub(cand[p2].point_b, cand[p1].point_b);
+    const auto area = [&](std::size_t e) { return linear3::dot(out.normal, linear3::cross(base, linear3::sub(cand[e].point_b, cand[p1].point_b))); };
+    std::size_t p3 = nc, p4 = nc;
+    for (std::size_t e = 0; e < nc; ++e) {
+        if (e == p1 || e == p2) continue;
+        if (p3 == nc || area(e) > area(p3)) p3 = e;
+        if (p4 == nc || area(e) < area(p4)) p4 = e;
+    }
+    out.add(cand[p3]);
+    if (p4 != p3) out.add(cand[p4]);
+}
 
 // The same manifold seen from B: the normal reversed, each point's witnesses swapped.
 template <class T>

@@ -5,13 +5,15 @@
 // error naming it, not a run-time fallback: a scene compiles only the routines of the kinds it can
 // hold, and calls them without dispatch at run time.
 // contact_of(A, pose_A, B, pose_B, margin): their contact manifold (manifold.hpp), by the pair's
-// manifold routine where it touches along more than a point (primitive_manifolds.hpp), else the
-// one point of the separation; points farther apart than the margin are left out.
+// own routine (primitive_manifolds.hpp, box_pairs.hpp), else from the support features of two
+// convex shapes or of a convex shape on a half-space (convex_manifolds.hpp); points farther apart
+// than the margin are left out.
 #pragma once
 
 #include <concepts>
 
 #include "ctga/collision/box_pairs.hpp"
+#include "ctga/collision/convex_manifolds.hpp"
 #include "ctga/collision/convex_pairs.hpp"
 #include "ctga/collision/half_space.hpp"
 #include "ctga/collision/manifold.hpp"
@@ -45,12 +47,10 @@ template <class A, class B, class T>
 [[nodiscard]] constexpr manifold<T> contact_of(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb, const T& margin) noexcept {
     if constexpr (requires { manifold_between(a, pa, b, pb, margin); }) return manifold_between(a, pa, b, pb, margin);
     else if constexpr (requires { manifold_between(b, pb, a, pa, margin); }) return reversed(manifold_between(b, pb, a, pa, margin));
-    else {
-        const separation<T> s = separation_of(a, pa, b, pb);
-        manifold<T> m{s.normal, 0, {}};
-        if (s.distance <= margin) m.add({s.point_a, s.point_b, s.distance, 0});
-        return m;
-    }
+    else if constexpr (std::same_as<A, half_space<T>> && convex_shape<B, T>) return half_space_manifold(pa, b, pb, margin);
+    else if constexpr (convex_shape<A, T> && std::same_as<B, half_space<T>>) return reversed(half_space_manifold(pb, a, pa, margin));
+    else if constexpr (convex_shape<A, T> && convex_shape<B, T>) return convex_manifold(a, pa, b, pb, separation_of(a, pa, b, pb), margin);
+    else static_assert(narrowphase_detail::no_routine<A, B>, "ctga::collision::contact_of: no manifold routine for this pair of shape kinds");
 }
 
 }  // namespace ctga::collision

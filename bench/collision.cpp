@@ -6,6 +6,7 @@
 int main(int argc, char** argv) {
     bench::collision::register_pairs();
     bench::collision::register_broadphase();
+    bench::collision::register_algebra();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

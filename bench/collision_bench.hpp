@@ -3,10 +3,13 @@
 //   collision_<pair>/<implementation>   distance and contact of one pair kind (collision_pairs.cpp)
 //   broadphase_10k/<implementation>     10,000 moving boxes, update and pair query per step
 //                                       (collision_broadphase.cpp)
+//   clip_segment/<vec3|pga>             a manifold's clipping step in 3-vectors and in ctga::pga
+//                                       (collision_algebra.cpp)
 // Each source registers its rows; collision.cpp runs them.
 #pragma once
 
 namespace bench::collision {
 void register_pairs();
 void register_broadphase();
+void register_algebra();
 }  // namespace bench::collision

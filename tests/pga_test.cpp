@@ -17,6 +17,7 @@
 #include <ctga/reference/dense.hpp>
 
 #include "support/catch.hpp"
+#include "support/published.hpp"
 
 namespace {
 
@@ -102,6 +103,12 @@ static_assert(std::is_same_v<decltype(pga::meet(pga::plane<>{}, pga::plane<>{}))
 static_assert(std::is_same_v<decltype(pga::meet(pga::plane<>{}, pga::line<>{})), pga::point<>>);
 static_assert(std::is_same_v<decltype(pga::meet(pga::plane<>{}, pga::plane<>{}, pga::plane<>{})), pga::point<>>);
 static_assert(std::is_same_v<decltype(pga::make_point<float>(1, 2, 3)), pga::point<float>>);
+// the clipping step of a contact manifold in the algebra (docs/design.md §9b, bench/collision_algebra.cpp):
+// the line through two points, and its meet with a plane
+static_assert(ctga::cost_of<decltype(pga::join.formula(std::declval<const pga::point<>&>(), std::declval<const pga::point<>&>())),
+                            pga::line<>> == ctga::test::published<12, 6>);
+static_assert(ctga::cost_of<decltype(pga::meet.formula(std::declval<const pga::plane<>&>(), std::declval<const pga::line<>&>())),
+                            pga::point<>> == ctga::test::published<12, 8>);
 
 // A translation at compile time, exactly: (0, 0, 0) moved by (1, 2, 3).
 static_assert([] {

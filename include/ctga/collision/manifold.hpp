@@ -12,8 +12,10 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 
+#include "ctga/collision/separation.hpp"
 #include "ctga/mechanics/linear3.hpp"
 
 namespace ctga::collision {
@@ -39,7 +41,8 @@ struct manifold {
 
 // Up to four of the candidate points (all of them when four or fewer): the deepest, the farthest
 // from it, then the two on either side of their line that span the largest triangles with it
-// (Box2D's reduction: the four that keep the most of the contact area).
+// (Box2D's reduction: the four that keep the most of the contact area); the four are extreme
+// points of the candidates, so that reducing a growing set in stages keeps its corners.
 template <class T>
 constexpr void add_best_four(manifold<T>& out, std::span<const contact_point<T>> cand) noexcept {
     const std::size_t nc = cand.size();
@@ -47,9 +50,22 @@ constexpr void add_best_four(manifold<T>& out, std::span<const contact_point<T>>
         for (const contact_point<T>& c : cand) out.add(c);
         return;
     }
+    // the deepest; among points as deep to rounding (a face flat on a face), the one farthest from
+    // their centre, so that a resting face keeps its corners
     std::size_t p1 = 0;
-    for (std::size_t e = 1; e < nc; ++e)
+    vec3<T> centre{};
+    T span = T(0);
+    for (std::size_t e = 0; e < nc; ++e) {
         if ((cand[e].separation) < (cand[p1].separation)) p1 = e;
+        centre = linear3::add_scaled(centre, T(1) / T(nc), cand[e].point_b);
+    }
+    for (std::size_t e = 0; e < nc; ++e) span = span > length(linear3::sub(cand[e].point_b, centre)) ? span : length(linear3::sub(cand[e].point_b, centre));
+    const T deepest = cand[p1].separation;
+    const T tie = T(64) * std::numeric_limits<T>::epsilon() * (span + (deepest < T(0) ? -deepest : deepest));
+    for (std::size_t e = 0; e < nc; ++e) {
+        const vec3<T> de = linear3::sub(cand[e].point_b, centre), d1 = linear3::sub(cand[p1].point_b, centre);
+        if ((cand[e].separation) <= deepest + tie && linear3::dot(de, de) > linear3::dot(d1, d1)) p1 = e;
+    }
     out.add(cand[p1]);
     std::size_t p2 = nc;
     T far = T(-1);

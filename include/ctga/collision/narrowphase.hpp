@@ -20,6 +20,7 @@
 #include "ctga/collision/primitive_manifolds.hpp"
 #include "ctga/collision/primitive_pairs.hpp"
 #include "ctga/collision/separation.hpp"
+#include "ctga/collision/surface_queries.hpp"
 #include "ctga/mechanics/motor.hpp"
 
 namespace ctga::collision {

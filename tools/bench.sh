@@ -7,6 +7,7 @@
 # and Eigen kernel with callgrind, and renders docs/benchmarks.md with docs/img/benchmarks.svg.
 # The compile-time tables come from tools/compile-cost.sh when it has been run (its fragment in
 # $BUILD_DIR/bench/).
+# The collision layer's queries beside FCL and Bullet come from ctga_collision_bench (collision.json).
 # BUILD_DIR overrides the build tree (default build/). Run it on a quiet machine.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -68,6 +69,13 @@ cmake --build "$BUILD_DIR" --target ctga_batch_bench -j"$(nproc)"
 "$out/ctga_batch_bench" --benchmark_repetitions=3 --benchmark_report_aggregates_only=true \
     --benchmark_out="$out/batch.json" --benchmark_out_format=json >"$out/batch.txt"
 head -n 1 "$out/batch.txt" >"$out/batch_peak.txt"
+
+# collision: ctga_collision_bench, the narrowphase pairs and the broadphase beside FCL and Bullet
+# (each found by CMake; tools/deps.sh installs both); render_benchmarks.py reads collision.json
+# beside results.json (the pairs' table, with their max_err counters)
+cmake --build "$BUILD_DIR" --target ctga_collision_bench -j"$(nproc)"
+"$out/ctga_collision_bench" --benchmark_repetitions=7 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
+    --benchmark_min_time=0.2 --benchmark_out="$out/collision.json" --benchmark_out_format=json
 
 /usr/bin/python3 tools/render_benchmarks.py "$out/results.json" "$out/instructions.txt" \
     "$out/compile_cost.md" docs/benchmarks.md docs/img/benchmarks.svg \

@@ -71,6 +71,8 @@
 #include <ctga/collision/box.hpp>
 #include <ctga/collision/capsule.hpp>
 #include <ctga/collision/half_space.hpp>
+#include <ctga/collision/hull.hpp>
+#include <ctga/collision/mesh.hpp>
 #include <ctga/collision/narrowphase.hpp>
 #include <ctga/collision/sphere.hpp>
 
@@ -996,9 +998,17 @@ std::shared_ptr<const pair_set<hull_shape, hull_shape>> make_hull_hull(std::uint
 
 void register_hull_hull() {
     const auto s = make_hull_hull(0xc011'0006);
-    // ---- ctga: collision_hull_hull/ctga goes here when ctga::collision has convex hulls: the hull
-    // of s->a[k].points (and s->b[k].points), separation_of(hull_a, s->pa[k], hull_b, s->pb[k]),
-    // checked against s->ex like the other rows (add_ctga with a pair_set of ctga hulls). ----
+    {
+        // ctga: the hulls of the same points (hull.hpp, capacity 32), GJK apart and EPA overlapping
+        using hull = co::convex_hull<double, 32>;
+        auto c = std::make_shared<pair_set<hull, hull>>();
+        for (std::size_t k = 0; k < poses; ++k) {
+            c->a.push_back(*co::make_hull<32, double>(s->a[k].points));
+            c->b.push_back(*co::make_hull<32, double>(s->b[k].points));
+        }
+        c->pa = s->pa, c->pb = s->pb, c->ex = s->ex;
+        add_ctga("hull_hull", std::shared_ptr<const pair_set<hull, hull>>(c));
+    }
 #ifdef CTGA_BENCH_FCL
     {
         // fcl::Convexd from the points and the triangular faces ([3, i, j, k] each); FCL's distance
@@ -1212,9 +1222,35 @@ struct bt_mesh_set {
 
 void register_sphere_mesh() {
     const auto s = make_sphere_mesh(0xc011'0007);
-    // ---- ctga: collision_sphere_mesh/ctga goes here when ctga::collision has triangle meshes: the
-    // mesh of s->mesh (vertices, counter-clockwise triangles), separation_of(sphere s->sphere[k] at
-    // s->pose[k], mesh at the identity), checked against s->ex (A the sphere, B the mesh). ----
+    {
+        // ctga: the terrain as a triangle mesh (mesh.hpp: its hierarchy in storage kept here), the
+        // separation of the sphere at s->pose[k] from the mesh at the identity (A the sphere)
+        struct ctga_mesh {
+            std::vector<std::array<std::uint32_t, 3>> triangles;
+            std::vector<co::bvh_node<double>> nodes;
+            std::vector<std::uint32_t> order;
+            co::triangle_mesh<double> mesh;
+            std::vector<co::sphere<double>> sphere;
+        };
+        auto c = std::make_shared<ctga_mesh>();
+        for (const auto& t : s->mesh.triangles)
+            c->triangles.push_back({static_cast<std::uint32_t>(t[0]), static_cast<std::uint32_t>(t[1]), static_cast<std::uint32_t>(t[2])});
+        c->nodes.resize(co::bvh_nodes_for(c->triangles.size()));
+        c->order.resize(c->triangles.size());
+        c->mesh = *co::make_triangle_mesh<double>(s->mesh.vertices, c->triangles, c->nodes, c->order);
+        for (std::size_t k = 0; k < poses; ++k) c->sphere.push_back(*co::make_sphere(s->sphere[k].radius));
+        const map identity{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
+        std::vector<answer> got;
+        for (std::size_t k = 0; k < poses; ++k) {
+            const co::separation<double> r = co::separation_of(c->sphere[k], s->pose[k], c->mesh, identity);
+            got.push_back({true, r.distance, true, r.normal, 0});
+        }
+        const std::string name = "collision_sphere_mesh/ctga";
+        add_row(name, [c, s, identity](std::size_t k) {
+            co::separation<double> r = ctga_separation(c->sphere[k], s->pose[k], c->mesh, identity);
+            benchmark::DoNotOptimize(r);
+        }, assess(name, s->ex, got, false));
+    }
 #ifdef CTGA_BENCH_FCL
     {
         // fcl::BVHModel<OBBRSSd> of the terrain against fcl::Sphered. FCL 0.7's mesh–sphere distance

@@ -126,7 +126,7 @@ template <class T>
                 if (dp <= T(0)) next[m++] = p;
                 if ((dp <= T(0)) != (dq <= T(0))) {
                     const T t = dp / (dp - dq);
-                    const std::uint32_t edge = p.feature < 4 ? p.feature : ((p.feature - 4) / 4) % 4;
+                    const std::uint32_t edge = (p.feature) < 4 ? p.feature : ((p.feature - 4) / 4) % 4;
                     next[m++] = {linear3::add_scaled(p.x, t, linear3::sub(q.x, p.x)), 4 + 4 * edge + plane};
                 }
             }

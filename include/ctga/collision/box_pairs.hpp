@@ -1,8 +1,9 @@
-// Two boxes. Apart: GJK's distance and witnesses (gjk.hpp). Overlapping: the separating axis test
-// (Gottschalk, Lin and Manocha 1996): the Minkowski difference of two boxes is a convex polytope
-// whose face normals are the boxes' face normals a_i, b_j and the edge crossings a_i × b_j, so the
-// penetration depth is the least overlap r_A(L) + r_B(L) − |L·D| over those 15 unit axes L
-// (r_X(L) = Σ_i h_i |L·x_i|, D = t_B − t_A), exact, and n = ±L towards B.
+// Two boxes. First the separating axis test (Gottschalk, Lin and Manocha 1996): the Minkowski
+// difference of two boxes is a convex polytope whose face normals are the boxes' face normals a_i,
+// b_j and the edge crossings a_i × b_j, so the penetration depth is the least overlap
+// r_A(L) + r_B(L) − |L·D| over those 15 unit axes L (r_X(L) = Σ_i h_i |L·x_i|, D = t_B − t_A),
+// exact, and n = ±L towards B; all in A's frame from C = R_Aᵀ R_B, stopping at the first axis that
+// separates. Apart: GJK's distance and witnesses (gjk.hpp).
 // The manifold of a face axis (Box2D's clipping, in three dimensions): the reference face (the
 // face of the axis) and the incident face of the other box (its face most against n); the incident
 // face's corners clipped by the reference face's four side planes (Sutherland–Hodgman) are the
@@ -11,7 +12,8 @@
 // 2i, + side 1), the incident face, and the corner (0–3) or the incident edge (4 + 4e) cut by side
 // plane p (+ p). An edge axis gives one point, the closest points of the two edges (id: bit 31,
 // the axes and the edges).
-// The separation's witnesses when overlapping are the manifold's deepest point.
+// The separation's witnesses when overlapping are the manifold's deepest point: for a face axis
+// the incident box's deepest corner when it lies over the reference face (no clipping needed).
 #pragma once
 
 #include <array>
@@ -31,14 +33,6 @@ namespace ctga::collision {
 namespace box_detail {
 using primitive_detail::absolute;
 
-// The box's extent along unit L: Σ h_i |L·x_i|.
-template <class T>
-[[nodiscard]] constexpr T extent(const box<T>& b, const motor_map<T>& p, const vec3<T>& L) noexcept {
-    T r = T(0);
-    for (std::size_t i = 0; i < 3; ++i) r += b.half[i] * absolute(linear3::dot(L, axis_of(p, i)));
-    return r;
-}
-
 // The least-overlap axis: kind 0 a face of A (index i), 1 a face of B (j), 2 edges a_i × b_j.
 template <class T>
 struct axis_choice {
@@ -47,27 +41,74 @@ struct axis_choice {
     int kind;
     std::size_t i, j;
 };
+// In A's frame (Gottschalk, Lin and Manocha's table): C = R_Aᵀ R_B (C_ij = a_i·b_j), D = R_Aᵀ (t_B −
+// t_A); along a_i the overlap is h_A,i + Σ_j h_B,j |C_ij| − |D_i|, along b_j Σ_i h_A,i |C_ij| +
+// h_B,j − |Σ_i D_i C_ij|, and along L = a_i × b_j (with (i, i1, i2) and (j, j1, j2) cyclic:
+// L = (…, −C_i2j, C_i1j) in A's frame, |L| = √(C_i1j² + C_i2j²)) it is
+// (h_A,i1 |C_i2j| + h_A,i2 |C_i1j| + h_B,j1 |C_ij2| + h_B,j2 |C_ij1| − |D_i2 C_i1j − D_i1 C_i2j|) / |L|.
+// The scan stops at the first axis whose depth is below `stop` (−margin: apart by more than the
+// margin; 0: apart, which is all a distance query needs to know before GJK).
 template <class T>
-[[nodiscard]] constexpr axis_choice<T> least_overlap(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
-                                                    const motor_map<T>& pb) noexcept {
-    const vec3<T> D = linear3::sub(pb.t, pa.t);
-    axis_choice<T> best{T(0), {}, -1, 0, 0};
-    const auto consider = [&](const vec3<T>& L, int kind, std::size_t i, std::size_t j, const T& bias) {
-        const T s = linear3::dot(L, D);
-        const T depth = extent(a, pa, L) + extent(b, pb, L) - absolute(s);
-        // faces first: an edge axis wins only by more than `bias` (a relative 1e-9 of the sizes)
-        if (best.kind < 0 || depth + bias < best.depth) best = {depth, s < T(0) ? linear3::scale(T(-1), L) : L, kind, i, j};
-    };
-    const T size = extent(a, pa, axis_of(pa, 0)) + extent(b, pb, axis_of(pb, 0));
-    for (std::size_t i = 0; i < 3; ++i) consider(axis_of(pa, i), 0, i, 0, T(0));
-    for (std::size_t j = 0; j < 3; ++j) consider(axis_of(pb, j), 1, 0, j, T(0));
+[[nodiscard]] constexpr axis_choice<T> least_overlap(const box<T>& a, const motor_map<T>& pa, const box<T>& b, const motor_map<T>& pb,
+                                                    const T& stop) noexcept {
+    std::array<std::array<T, 3>, 3> C{}, A{};  // A = |C|
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) {
-            const vec3<T> c = linear3::cross(axis_of(pa, i), axis_of(pb, j));
-            const T l = length(c);
-            if (l > T(1e-6)) consider(linear3::scale(T(1) / l, c), 2, i, j, T(1e-9) * size);
+            C[i][j] = pa.R[0][i] * pb.R[0][j] + pa.R[1][i] * pb.R[1][j] + pa.R[2][i] * pb.R[2][j];
+            A[i][j] = absolute(C[i][j]);
         }
-    return best;
+    const vec3<T> D = to_body(pa, pb.t);
+    const vec3<T>& ha = a.half;
+    const vec3<T>& hb = b.half;
+    axis_choice<T> best{T(0), {}, -1, 0, 0};
+    vec3<T> local{};  // the best axis in A's frame, signed towards B
+    // faces first: an edge axis wins only by more than `bias` (a relative 1e-9 of the sizes)
+    const T bias = T(1e-9) * (ha[0] + hb[0]);
+    const auto consider = [&](const T& depth, const T& s, const vec3<T>& L, int kind, std::size_t i, std::size_t j, const T& by) {
+        if (best.kind < 0 || depth + by < best.depth) {
+            best = {depth, {}, kind, i, j};
+            local = s < T(0) ? linear3::scale(T(-1), L) : L;
+        }
+        return depth < stop;
+    };
+    const auto finish = [&] {
+        best.normal = linear3::apply(pa.R, local);
+        return best;
+    };
+    for (std::size_t i = 0; i < 3; ++i) {
+        vec3<T> L{};
+        L[i] = T(1);
+        if (consider(ha[i] + hb[0] * A[i][0] + hb[1] * A[i][1] + hb[2] * A[i][2] - absolute(D[i]), D[i], L, 0, i, 0, T(0))) return finish();
+    }
+    for (std::size_t j = 0; j < 3; ++j) {
+        const T s = D[0] * C[0][j] + D[1] * C[1][j] + D[2] * C[2][j];
+        if (consider(ha[0] * A[0][j] + ha[1] * A[1][j] + ha[2] * A[2][j] + hb[j] - absolute(s), s, vec3<T>{C[0][j], C[1][j], C[2][j]}, 1, 0, j, T(0)))
+            return finish();
+    }
+    // the edges: depth (r − |s|)/l beats the best when r − |s| < (best − bias) l, so that only an
+    // axis that wins is divided by its length (and made unit at the end)
+    T length_of_best = T(1);
+    for (std::size_t i = 0; i < 3; ++i) {
+        const std::size_t i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+        for (std::size_t j = 0; j < 3; ++j) {
+            const std::size_t j1 = (j + 1) % 3, j2 = (j + 2) % 3;
+            const T l = math::sqrt(C[i1][j] * C[i1][j] + C[i2][j] * C[i2][j]);
+            if (!(l > T(1e-6))) continue;  // a_i ∥ b_j: the face axes cover it
+            const T s = D[i2] * C[i1][j] - D[i1] * C[i2][j];
+            const T r = ha[i1] * A[i2][j] + ha[i2] * A[i1][j] + hb[j1] * A[i][j2] + hb[j2] * A[i][j1];
+            const T x = r - absolute(s);
+            if (!(x < (best.depth - bias) * l)) continue;
+            best = {x / l, {}, 2, i, j};
+            local = {};
+            local[i1] = s < T(0) ? C[i2][j] : -C[i2][j];
+            local[i2] = s < T(0) ? -C[i1][j] : C[i1][j];
+            length_of_best = l;
+            if (best.depth < stop) break;
+        }
+        if (best.depth < stop) break;
+    }
+    local = linear3::scale(T(1) / length_of_best, local);
+    return finish();
 }
 
 // The face of box b (pose p) whose outward normal is most against n: axis k, side ±1.
@@ -186,13 +227,30 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr separation<T> separation_between(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
                                                          const motor_map<T>& pb) noexcept {
-    const gjk_result<T> g = gjk(a, pa, b, pb, T(1e-14));
-    if (!g.overlap && g.distance > T(0)) {
+    const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb, T(0));
+    if (ax.depth < T(0)) {  // apart: GJK's distance
+        const gjk_result<T> g = gjk(a, pa, b, pb, T(1e-14));
         const vec3<T> d = linear3::sub(g.point_b, g.point_a);
         const T l = length(d);
-        return {l, linear3::scale(T(1) / l, d), g.point_a, g.point_b};
+        if (!g.overlap && l > T(0)) return {l, linear3::scale(T(1) / l, d), g.point_a, g.point_b};
     }
-    const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb);
+    // a face axis: the incident box's deepest corner, when it lies over the reference face, is the
+    // deepest point of the clipped face (the manifold's), found without clipping
+    if (ax.kind != 2) {
+        const bool on_a = ax.kind == 0;
+        const box<T>& R = on_a ? a : b;
+        const motor_map<T>& pr = on_a ? pa : pb;
+        const std::size_t k = on_a ? ax.i : ax.j;
+        const vec3<T> into = on_a ? linear3::scale(T(-1), ax.normal) : ax.normal;  // the incident's deepest way
+        const vec3<T> corner = gjk_detail::world_support(on_a ? b : a, on_a ? pb : pa, into);
+        const vec3<T> c = to_body(pr, corner);
+        const std::size_t u = (k + 1) % 3, v = (k + 2) % 3;
+        if (box_detail::absolute(c[u]) <= R.half[u] && box_detail::absolute(c[v]) <= R.half[v]) {
+            const vec3<T> across = linear3::scale(ax.depth, ax.normal);
+            return on_a ? separation<T>{-ax.depth, ax.normal, linear3::add(corner, across), corner}
+                        : separation<T>{-ax.depth, ax.normal, corner, linear3::sub(corner, across)};
+        }
+    }
     const manifold<T> m = box_detail::overlap_manifold(a, pa, b, pb, ax, T(0));
     if (m.count == 0) return {-ax.depth, ax.normal, pa.t, pb.t};  // (clipping lost every point: rounding)
     std::size_t deepest = 0;
@@ -204,8 +262,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr manifold<T> manifold_between(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
                                                      const motor_map<T>& pb, const T& margin) noexcept {
-    const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb);
-    // apart by more than the margin along the best axis: no contact (a lower bound of the distance)
+    const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb, -margin);
+    // apart by more than the margin along an axis: no contact (a lower bound of the distance)
     if (-ax.depth > margin) return manifold<T>{ax.normal, 0, {}};
     return box_detail::overlap_manifold(a, pa, b, pb, ax, margin);
 }

@@ -120,7 +120,7 @@ template <class T>
             const T want = end == 0 ? (ta < tb ? ta : tb) : (ta < tb ? tb : ta);
             const T t = want < T(0) ? T(0) : want > T(1) ? T(1) : want;  // within the reference's span
             const vec3<T> x = linear3::add_scaled(a, (t - ta) / (tb - ta), linear3::sub(b, a));
-            const separation<T> s = primitive_detail::balls(primitive_detail::closest_on(S, x), rr, x, ri, n);
+            const separation<T> s = primitive_detail::balls(primitive_detail::closest_on(S, x), rr, x, ri, [&] { return n; });
             if (s.distance <= margin) cand[nc++] = {s.point_a, s.point_b, s.distance, mix(R.which, I.which, end)};
         }
     }

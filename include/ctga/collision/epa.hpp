@@ -42,7 +42,7 @@ inline constexpr std::size_t max_points = 136;  // a tetrahedron, six axis suppo
 
 template <class T>
 struct points {
-    std::array<vec3<T>, max_points> w{}, a{}, b{};
+    std::array<vec3<T>, max_points> w, a, b;  // [0, n) in use (no fill)
     std::size_t n = 0;
     constexpr void add(const vec3<T>& wi, const vec3<T>& ai, const vec3<T>& bi) noexcept {
         w[n] = wi, a[n] = ai, b[n] = bi;

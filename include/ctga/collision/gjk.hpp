@@ -43,60 +43,89 @@ struct simplex {
     vec3<T> closest{};  // Σ weight_i v_i.w
 };
 
+// A sub-simplex: which vertices stay (at most three), their weights and the point they give.
+// The Voronoi tests below only read the points w and return one of these; the simplex itself is
+// rewritten once, by apply (its vertices hold a, b and w: copies are what a step costs most).
 template <class T>
-constexpr void keep(simplex<T>& s, std::initializer_list<std::size_t> which, std::initializer_list<T> weights) noexcept {
-    std::array<vertex<T>, 4> v{};
+struct reduction {
+    std::size_t n;
+    std::array<std::size_t, 3> index;
+    std::array<T, 3> weight;
+    vec3<T> closest;
+};
+template <class T>
+[[nodiscard]] constexpr reduction<T> reduce(const simplex<T>& s, std::initializer_list<std::size_t> which,
+                                            std::initializer_list<T> weights) noexcept {
+    reduction<T> r{which.size(), {}, {}, {}};
     std::size_t k = 0;
-    for (std::size_t i : which) v[k++] = s.v[i];
-    s.v = v;
-    s.n = k;
+    for (std::size_t i : which) r.index[k++] = i;
     k = 0;
-    s.closest = {};
     for (const T& w : weights) {
-        s.weight[k] = w;
-        s.closest = linear3::add_scaled(s.closest, w, s.v[k].w);
+        r.weight[k] = w;
+        r.closest = linear3::add_scaled(r.closest, w, s.v[r.index[k]].w);
         ++k;
     }
+    return r;
+}
+template <class T>
+constexpr void apply(simplex<T>& s, const reduction<T>& r) noexcept {
+    std::array<vertex<T>, 3> v;
+    for (std::size_t k = 0; k < r.n; ++k) v[k] = s.v[r.index[k]];
+    for (std::size_t k = 0; k < r.n; ++k) s.v[k] = v[k], s.weight[k] = r.weight[k];
+    s.n = r.n;
+    s.closest = r.closest;
+}
+template <class T>
+constexpr void keep(simplex<T>& s, std::initializer_list<std::size_t> which, std::initializer_list<T> weights) noexcept {
+    apply(s, reduce(s, which, weights));
 }
 
 // The nearest point of segment v0 v1 to the origin.
 template <class T>
-constexpr void segment(simplex<T>& s) noexcept {
+[[nodiscard]] constexpr reduction<T> on_segment(const simplex<T>& s) noexcept {
     const vec3<T> a = s.v[0].w, ab = linear3::sub(s.v[1].w, a);
     const T t = -linear3::dot(a, ab), l = linear3::dot(ab, ab);
-    if (!(t > T(0))) keep<T>(s, {0}, {T(1)});
-    else if (!(t < l)) keep<T>(s, {1}, {T(1)});
-    else keep<T>(s, {0, 1}, {T(1) - t / l, t / l});
+    if (!(t > T(0))) return reduce<T>(s, {0}, {T(1)});
+    if (!(t < l)) return reduce<T>(s, {1}, {T(1)});
+    return reduce<T>(s, {0, 1}, {T(1) - t / l, t / l});
+}
+template <class T>
+constexpr void segment(simplex<T>& s) noexcept {
+    apply(s, on_segment(s));
 }
 
-// The nearest point of triangle v0 v1 v2 (indices i, j, k of s) to the origin, by its regions.
+// The nearest point of triangle v_i v_j v_k to the origin, by its regions.
 template <class T>
-constexpr void triangle(simplex<T>& s, std::size_t i, std::size_t j, std::size_t k) noexcept {
+[[nodiscard]] constexpr reduction<T> on_triangle(const simplex<T>& s, std::size_t i, std::size_t j, std::size_t k) noexcept {
     const vec3<T> a = s.v[i].w, b = s.v[j].w, c = s.v[k].w;
     const vec3<T> ab = linear3::sub(b, a), ac = linear3::sub(c, a);
     const T d1 = -linear3::dot(ab, a), d2 = -linear3::dot(ac, a);
-    if (d1 <= T(0) && d2 <= T(0)) return keep<T>(s, {i}, {T(1)});
+    if (d1 <= T(0) && d2 <= T(0)) return reduce<T>(s, {i}, {T(1)});
     const T d3 = -linear3::dot(ab, b), d4 = -linear3::dot(ac, b);
-    if (d3 >= T(0) && d4 <= d3) return keep<T>(s, {j}, {T(1)});
+    if (d3 >= T(0) && d4 <= d3) return reduce<T>(s, {j}, {T(1)});
     const T vc = d1 * d4 - d3 * d2;
     if (vc <= T(0) && d1 >= T(0) && d3 <= T(0)) {
         const T t = d1 / (d1 - d3);
-        return keep<T>(s, {i, j}, {T(1) - t, t});
+        return reduce<T>(s, {i, j}, {T(1) - t, t});
     }
     const T d5 = -linear3::dot(ab, c), d6 = -linear3::dot(ac, c);
-    if (d6 >= T(0) && d5 <= d6) return keep<T>(s, {k}, {T(1)});
+    if (d6 >= T(0) && d5 <= d6) return reduce<T>(s, {k}, {T(1)});
     const T vb = d5 * d2 - d1 * d6;
     if (vb <= T(0) && d2 >= T(0) && d6 <= T(0)) {
         const T t = d2 / (d2 - d6);
-        return keep<T>(s, {i, k}, {T(1) - t, t});
+        return reduce<T>(s, {i, k}, {T(1) - t, t});
     }
     const T va = d3 * d6 - d5 * d4;
     if (va <= T(0) && d4 - d3 >= T(0) && d5 - d6 >= T(0)) {
         const T t = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-        return keep<T>(s, {j, k}, {T(1) - t, t});
+        return reduce<T>(s, {j, k}, {T(1) - t, t});
     }
     const T inv = T(1) / (va + vb + vc), v = vb * inv, w = vc * inv;
-    keep<T>(s, {i, j, k}, {T(1) - v - w, v, w});
+    return reduce<T>(s, {i, j, k}, {T(1) - v - w, v, w});
+}
+template <class T>
+constexpr void triangle(simplex<T>& s, std::size_t i, std::size_t j, std::size_t k) noexcept {
+    apply(s, on_triangle(s, i, j, k));
 }
 
 // Whether the origin and vertex d lie on opposite sides of the plane a b c (strictly).
@@ -108,22 +137,25 @@ template <class T>
 }
 
 // The nearest point of tetrahedron v0…v3 to the origin: the best of the faces the origin is outside
-// of; inside all four: the origin is in it (returns false).
+// of; inside all four: the origin is in it (n = 0).
 template <class T>
-constexpr bool tetrahedron(simplex<T>& s) noexcept {
+[[nodiscard]] constexpr reduction<T> on_tetrahedron(const simplex<T>& s) noexcept {
     constexpr std::size_t face[4][4] = {{0, 1, 2, 3}, {0, 2, 3, 1}, {0, 3, 1, 2}, {1, 3, 2, 0}};
-    bool any = false;
-    simplex<T> best{};
+    reduction<T> best{0, {}, {}, {}};
     T best_d = T(0);
     for (const auto& f : face) {
         if (!origin_outside(s.v[f[0]].w, s.v[f[1]].w, s.v[f[2]].w, s.v[f[3]].w)) continue;
-        simplex<T> t = s;
-        triangle(t, f[0], f[1], f[2]);
-        const T d = linear3::dot(t.closest, t.closest);
-        if (!any || d < best_d) best = t, best_d = d, any = true;
+        const reduction<T> r = on_triangle(s, f[0], f[1], f[2]);
+        const T d = linear3::dot(r.closest, r.closest);
+        if (best.n == 0 || d < best_d) best = r, best_d = d;
     }
-    if (any) s = best;
-    return any;
+    return best;
+}
+template <class T>
+constexpr bool tetrahedron(simplex<T>& s) noexcept {
+    const reduction<T> r = on_tetrahedron(s);
+    if (r.n > 0) apply(s, r);
+    return r.n > 0;
 }
 
 template <class S, class T>
@@ -138,14 +170,16 @@ struct run_result {
     gjk_result<T> result;
     simplex<T> last;
 };
+// `start`: the first search direction (from A towards B; zero: along t_B − t_A).
 template <class A, class B, class T>
-[[nodiscard]] constexpr run_result<T> run(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb, const T& tolerance) noexcept {
+[[nodiscard]] constexpr run_result<T> run(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb, const T& tolerance,
+                                          const vec3<T>& start = {}) noexcept {
     const auto support = [&](const vec3<T>& d) {
         const vec3<T> sa = world_support(a, pa, d), sb = world_support(b, pb, linear3::scale(T(-1), d));
         return vertex<T>{linear3::sub(sa, sb), sa, sb};
     };
     simplex<T> s;
-    vec3<T> d0 = linear3::sub(pb.t, pa.t);
+    vec3<T> d0 = linear3::dot(start, start) > T(0) ? start : linear3::sub(pb.t, pa.t);
     if (!(linear3::dot(d0, d0) > T(0))) d0 = {T(1), T(0), T(0)};
     s.v[0] = support(d0);
     s.n = 1;
@@ -161,15 +195,16 @@ template <class A, class B, class T>
         bool repeated = false;
         for (std::size_t i = 0; i < s.n; ++i) repeated = repeated || (s.v[i].a == w.a && s.v[i].b == w.b);
         if (repeated) break;
-        const simplex<T> before = s;
-        s.v[s.n++] = w;
-        if (s.n == 2) segment(s);
-        else if (s.n == 3) triangle(s, 0, 1, 2);
-        else if (!tetrahedron(s)) return {{true, T(0), {}, {}, step}, s};
-        if (!(linear3::dot(s.closest, s.closest) < vv)) {  // no progress (rounding): the one before stands
-            s = before;
-            break;
+        s.v[s.n] = w;  // (counted in once the step is taken)
+        const reduction<T> r = s.n == 1 ? on_segment(s)
+                             : s.n == 2 ? on_triangle(s, 0, 1, 2)
+                                        : on_tetrahedron(s);
+        if (s.n == 3 && r.n == 0) {
+            s.n = 4;
+            return {{true, T(0), {}, {}, step}, s};
         }
+        if (!(linear3::dot(r.closest, r.closest) < vv)) break;  // no progress (rounding): the simplex before stands
+        apply(s, r);
     }
     vec3<T> on_a{}, on_b{};
     for (std::size_t i = 0; i < s.n; ++i) {

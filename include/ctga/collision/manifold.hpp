@@ -59,7 +59,11 @@ constexpr void add_best_four(manifold<T>& out, std::span<const contact_point<T>>
         if ((cand[e].separation) < (cand[p1].separation)) p1 = e;
         centre = linear3::add_scaled(centre, T(1) / T(nc), cand[e].point_b);
     }
-    for (std::size_t e = 0; e < nc; ++e) span = span > length(linear3::sub(cand[e].point_b, centre)) ? span : length(linear3::sub(cand[e].point_b, centre));
+    for (std::size_t e = 0; e < nc; ++e) {
+        const vec3<T> d = linear3::sub(cand[e].point_b, centre);
+        span = span > linear3::dot(d, d) ? span : linear3::dot(d, d);
+    }
+    span = math::sqrt(span);
     const T deepest = cand[p1].separation;
     const T tie = T(64) * std::numeric_limits<T>::epsilon() * (span + (deepest < T(0) ? -deepest : deepest));
     for (std::size_t e = 0; e < nc; ++e) {

@@ -36,7 +36,7 @@ struct polytope_triangle {
 
 template <class T, std::size_t Capacity>
 struct polytope {
-    std::array<polytope_triangle<T>, Capacity> triangle{};
+    std::array<polytope_triangle<T>, Capacity> triangle;  // [0, count) in use (no fill: EPA makes one per call)
     std::size_t count = 0;
 };
 
@@ -99,11 +99,11 @@ constexpr grow_result grow(polytope<T, Capacity>& p, std::span<const vec3<T>> x,
         if (height(p.triangle[t], q) > height(p.triangle[first], q)) first = t;
     if (!(height(p.triangle[first], q) > epsilon)) return grow_result::inside;
     std::array<bool, Capacity> seen{};
-    std::array<std::size_t, Capacity> stack{};
+    std::array<std::uint16_t, Capacity> stack;  // (written before read: no fill)
     std::size_t top = 0, seen_count = 1;
     seen[first] = true;
-    stack[top++] = first;
-    std::array<std::array<std::uint16_t, 2>, Capacity + 2> horizon{};
+    stack[top++] = static_cast<std::uint16_t>(first);
+    std::array<std::array<std::uint16_t, 2>, Capacity + 2> horizon;
     std::size_t h = 0;
     while (top > 0) {
         const std::size_t t = stack[--top];
@@ -113,7 +113,7 @@ constexpr grow_result grow(polytope<T, Capacity>& p, std::span<const vec3<T>> x,
             if (u < p.count && seen[u]) continue;
             if (u < p.count && height(p.triangle[u], q) > epsilon) {
                 seen[u] = true, ++seen_count;
-                stack[top++] = u;
+                stack[top++] = static_cast<std::uint16_t>(u);
             } else {
                 if (h == horizon.size()) return grow_result::full;
                 horizon[h++] = {a, b};
@@ -128,13 +128,14 @@ constexpr grow_result grow(polytope<T, Capacity>& p, std::span<const vec3<T>> x,
     }
     h = kept_h;
     if (p.count - seen_count + h > Capacity) return grow_result::full;
-    std::array<polytope_triangle<T>, Capacity> kept{};
+    std::array<polytope_triangle<T>, Capacity + 2> fresh;  // the new triangles, checked before any change
+    for (std::size_t e = 0; e < h; ++e)
+        if (!make_triangle(x, horizon[e][0], horizon[e][1], index, fresh[e])) return grow_result::degenerate;
+    // in place: the unseen triangles moved down, the new ones after them
     std::size_t n = 0;
     for (std::size_t t = 0; t < p.count; ++t)
-        if (!seen[t]) kept[n++] = p.triangle[t];
-    for (std::size_t e = 0; e < h; ++e)
-        if (!make_triangle(x, horizon[e][0], horizon[e][1], index, kept[n++])) return grow_result::degenerate;
-    p.triangle = kept;
+        if (!seen[t]) p.triangle[n++] = p.triangle[t];
+    for (std::size_t e = 0; e < h; ++e) p.triangle[n++] = fresh[e];
     p.count = n;
     return grow_result::added;
 }

@@ -30,16 +30,17 @@ template <class T>
     return x < T(0) ? -x : x;
 }
 template <class T>
-[[nodiscard]] constexpr T clamp01(const T& x) noexcept {
-    return x < T(0) ? T(0) : x > T(1) ? T(1) : x;
+[[nodiscard]] constexpr T clamp_unit(const T& x) noexcept {  // to [−1, 1], by selects
+    const T up = x < T(1) ? x : T(1);
+    return up > T(-1) ? up : T(-1);
 }
-
-// Two balls: centres a, b, radii ra, rb; `across` the normal to use when the centres coincide.
-template <class T>
-[[nodiscard]] constexpr separation<T> balls(const vec3<T>& a, const T& ra, const vec3<T>& b, const T& rb, const vec3<T>& across) noexcept {
+// Two balls: centres a, b, radii ra, rb; across() the normal to use when the centres coincide
+// (called only then: it costs a cross product and a square root).
+template <class T, class Across>
+[[nodiscard]] constexpr separation<T> balls(const vec3<T>& a, const T& ra, const vec3<T>& b, const T& rb, Across&& across) noexcept {
     const vec3<T> d = linear3::sub(b, a);
     const T l = length(d);
-    const vec3<T> n = l > T(0) ? linear3::scale(T(1) / l, d) : across;
+    const vec3<T> n = l > T(0) ? linear3::scale(T(1) / l, d) : across();
     return {l - ra - rb, n, linear3::add_scaled(a, ra, n), linear3::add_scaled(b, -rb, n)};
 }
 
@@ -68,39 +69,42 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> closest_on(const segment<T>& s, const vec3<T>& p) noexcept {
     const T hh = linear3::dot(s.half, s.half);
     if (!(hh > T(0))) return s.centre;
-    const T tau = T(2) * clamp01((linear3::dot(linear3::sub(p, s.centre), s.half) / hh + T(1)) / T(2)) - T(1);
+    const T tau = clamp_unit(linear3::dot(linear3::sub(p, s.centre), s.half) / hh);
     return linear3::add_scaled(s.centre, tau, s.half);
 }
 
-// The closest points of two segments P(σ) = p0 + σ d1, Q(τ) = q0 + τ d2, σ, τ ∈ [0, 1]: minimise
-// |P − Q|² over σ for the unclamped τ(σ) = (d2·(P − q0))/|d2|², clamping each in turn (Ericson,
-// Real-Time Collision Detection, §5.1.9); parallel segments take σ = 0 (a closest pair, not the
-// only one).
+// The closest points of two segments P(σ) = c_A + σ h_A, Q(τ) = c_B + τ h_B, σ, τ ∈ [−1, 1]:
+// minimise |P − Q|² over σ for the unclamped τ(σ) = h_B·(P − c_B)/|h_B|², clamping each in turn
+// (Ericson, Real-Time Collision Detection, §5.1.9, on centres and half segments); parallel
+// segments take σ = 0 (a closest pair, not the only one).
 template <class T>
 struct closest_pair {
     vec3<T> p, q;
 };
 template <class T>
 [[nodiscard]] constexpr closest_pair<T> closest_points(const segment<T>& A, const segment<T>& B) noexcept {
-    const vec3<T> p0 = linear3::sub(A.centre, A.half), q0 = linear3::sub(B.centre, B.half);
-    const vec3<T> d1 = linear3::scale(T(2), A.half), d2 = linear3::scale(T(2), B.half), r = linear3::sub(p0, q0);
-    const T a = linear3::dot(d1, d1), e = linear3::dot(d2, d2), f = linear3::dot(d2, r);
+    const vec3<T> r = linear3::sub(A.centre, B.centre);
+    const T a = linear3::dot(A.half, A.half), e = linear3::dot(B.half, B.half), f = linear3::dot(B.half, r);
     T s = T(0), t = T(0);
     if (!(a > T(0)) && !(e > T(0))) {
     } else if (!(a > T(0))) {
-        t = clamp01(f / e);
+        t = clamp_unit(f / e);
     } else {
-        const T c = linear3::dot(d1, r);
-        if (!(e > T(0))) s = clamp01(-c / a);
+        const T c = linear3::dot(A.half, r);
+        if (!(e > T(0))) s = clamp_unit(-c / a);
         else {
-            const T b = linear3::dot(d1, d2), denom = a * e - b * b;
-            s = denom > T(0) ? clamp01((b * f - c * e) / denom) : T(0);
-            t = (b * s + f) / e;
-            if (t < T(0)) t = T(0), s = clamp01(-c / a);
-            else if (t > T(1)) t = T(1), s = clamp01((b - c) / a);
+            // (selects, not branches: which end clamps is a coin toss for random segments; the
+            // three reciprocals at once, not one division waiting for the other)
+            const T b = linear3::dot(A.half, B.half), denom = a * e - b * b;
+            const T inv_denom = T(1) / denom, inv_e = T(1) / e, inv_a = T(1) / a;
+            const T s0 = denom > T(0) ? clamp_unit((b * f - c * e) * inv_denom) : T(0);
+            const T t0 = (b * s0 + f) * inv_e, t1 = clamp_unit(t0);
+            const T s1 = clamp_unit((b * t1 - c) * inv_a);
+            s = t0 == t1 ? s0 : s1;
+            t = t1;
         }
     }
-    return {linear3::add_scaled(p0, s, d1), linear3::add_scaled(q0, t, d2)};
+    return {linear3::add_scaled(A.centre, s, A.half), linear3::add_scaled(B.centre, t, B.half)};
 }
 
 // The normal when two cores meet: perpendicular to both segments (to the one that is not a point).
@@ -129,7 +133,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr separation<T> separation_between(const sphere<T>& a, const motor_map<T>& pa, const sphere<T>& b,
                                                const motor_map<T>& pb) noexcept {
-    return primitive_detail::balls(pa.t, a.radius, pb.t, b.radius, vec3<T>{T(0), T(0), T(1)});
+    return primitive_detail::balls(pa.t, a.radius, pb.t, b.radius, [] { return vec3<T>{T(0), T(0), T(1)}; });
 }
 
 template <class T>
@@ -137,7 +141,7 @@ template <class T>
                                                const motor_map<T>& pb) noexcept {
     using namespace primitive_detail;
     const segment<T> A = core_of(a, pa);
-    return balls(closest_on(A, pb.t), a.radius, pb.t, b.radius, across(A.half, vec3<T>{}));
+    return balls(closest_on(A, pb.t), a.radius, pb.t, b.radius, [&] { return across(A.half, vec3<T>{}); });
 }
 
 template <class T>
@@ -146,7 +150,7 @@ template <class T>
     using namespace primitive_detail;
     const segment<T> A = core_of(a, pa), B = core_of(b, pb);
     const closest_pair<T> c = closest_points(A, B);
-    return balls(c.p, a.radius, c.q, b.radius, across(A.half, B.half));
+    return balls(c.p, a.radius, c.q, b.radius, [&] { return across(A.half, B.half); });
 }
 
 // A box A and a sphere B: the sphere's centre c in the box's frame, clamped to the box, is the
@@ -156,13 +160,13 @@ template <class T>
 [[nodiscard]] constexpr separation<T> separation_between(const box<T>& a, const motor_map<T>& pa, const sphere<T>& b,
                                                const motor_map<T>& pb) noexcept {
     const vec3<T> c = to_body(pa, pb.t);
-    vec3<T> q = c;
-    bool inside = true;
-    for (std::size_t i = 0; i < 3; ++i) {
-        if (c[i] > a.half[i]) q[i] = a.half[i], inside = false;
-        else if (c[i] < -a.half[i]) q[i] = -a.half[i], inside = false;
+    vec3<T> q{};
+    for (std::size_t i = 0; i < 3; ++i) {  // (selects, not branches: which axes clamp is a coin toss)
+        const T up = c[i] < a.half[i] ? c[i] : a.half[i];
+        q[i] = up > -a.half[i] ? up : -a.half[i];
     }
-    if (!inside) return primitive_detail::balls(to_world(pa, q), T(0), pb.t, b.radius, vec3<T>{T(0), T(0), T(1)});
+    const bool inside = q[0] == c[0] && q[1] == c[1] && q[2] == c[2];
+    if (!inside) return primitive_detail::balls(to_world(pa, q), T(0), pb.t, b.radius, [] { return vec3<T>{T(0), T(0), T(1)}; });
     std::size_t k = 0;
     for (std::size_t i = 1; i < 3; ++i)
         if (a.half[i] - primitive_detail::absolute(c[i]) < a.half[k] - primitive_detail::absolute(c[k])) k = i;

@@ -143,27 +143,28 @@ template <class T>
                                                const box<T>& I, const motor_map<T>& pi, const T& margin) noexcept {
     const face<T> ref{i, linear3::dot(n, axis_of(pr, i)) > T(0) ? T(1) : T(-1)};
     const face<T> inc = most_against(pi, n);
-    // the incident face's corners, counter-clockwise order not needed: a cycle around the face
+    // the incident face's corners in R's frame (a cycle around the face), where the side planes
+    // are |x_u| ≤ h_u, |x_v| ≤ h_v: clipping compares one coordinate
     const std::size_t u = (inc.axis + 1) % 3, v = (inc.axis + 2) % 3;
-    const vec3<T> centre = linear3::add_scaled(pi.t, inc.side * I.half[inc.axis], axis_of(pi, inc.axis));
-    const vec3<T> eu = linear3::scale(I.half[u], axis_of(pi, u)), ev = linear3::scale(I.half[v], axis_of(pi, v));
+    const vec3<T> centre = to_body(pr, linear3::add_scaled(pi.t, inc.side * I.half[inc.axis], axis_of(pi, inc.axis)));
+    const vec3<T> eu = linear3::apply_transposed(pr.R, linear3::scale(I.half[u], axis_of(pi, u)));
+    const vec3<T> ev = linear3::apply_transposed(pr.R, linear3::scale(I.half[v], axis_of(pi, v)));
     constexpr int su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
-    std::array<corner<T>, 8> poly{}, next{};
-    std::size_t count = 4;
+    std::array<std::array<corner<T>, 8>, 2> buffer;  // ping-pong (written before read)
+    std::size_t in = 0, count = 4;
     for (std::uint32_t c = 0; c < 4; ++c)
-        poly[c] = {linear3::add_scaled(linear3::add_scaled(centre, T(su[c]), eu), T(sv[c]), ev), c};
-    // clip by the reference face's four side planes: ±x_k · (x − t_R) ≤ h_k for the two other axes
+        buffer[0][c] = {linear3::add_scaled(linear3::add_scaled(centre, T(su[c]), eu), T(sv[c]), ev), c};
     std::uint32_t plane = 0;
     for (std::size_t s = 1; s < 3; ++s) {
         const std::size_t k = (i + s) % 3;
-        const vec3<T> axis = axis_of(pr, k);
         for (int sign = -1; sign <= 1; sign += 2, ++plane) {
-            const auto outside = [&](const vec3<T>& x) { return T(sign) * linear3::dot(axis, linear3::sub(x, pr.t)) - R.half[k]; };
+            const std::array<corner<T>, 8>& poly = buffer[in];
+            std::array<corner<T>, 8>& next = buffer[1 - in];
             std::size_t m = 0;
             for (std::size_t e = 0; e < count; ++e) {
                 const corner<T>& p = poly[e];
-                const corner<T>& q = poly[(e + 1) % count];
-                const T dp = outside(p.x), dq = outside(q.x);
+                const corner<T>& q = poly[e + 1 == count ? 0 : e + 1];
+                const T dp = T(sign) * p.x[k] - R.half[k], dq = T(sign) * q.x[k] - R.half[k];
                 if (dp <= T(0)) next[m++] = p;
                 if ((dp <= T(0)) != (dq <= T(0))) {
                     const T t = dp / (dp - dq);
@@ -171,22 +172,30 @@ template <class T>
                     next[m++] = {linear3::add_scaled(p.x, t, linear3::sub(q.x, p.x)), 4 + 4 * edge + plane};
                 }
             }
-            poly = next;
+            in = 1 - in;
             count = m;
         }
     }
-    // candidates within the margin: separation along n from the reference face's plane
-    const T offset = linear3::dot(n, pr.t) + R.half[i];
-    std::array<contact_point<T>, 8> cand{};
+    // candidates within the margin: their height over the reference face; in R's frame, the normal
+    // ±e_i, turned to the world for the four kept
+    std::array<contact_point<T>, 8> cand;
     std::size_t nc = 0;
     for (std::size_t e = 0; e < count; ++e) {
-        const T sep = linear3::dot(n, poly[e].x) - offset;
-        if (sep <= margin)
-            cand[nc++] = {linear3::add_scaled(poly[e].x, -sep, n), poly[e].x, sep,
-                          face_id(ref) | (face_id(inc) << 3) | (poly[e].feature << 6)};
+        const vec3<T>& x = buffer[in][e].x;
+        const T sep = ref.side * x[i] - R.half[i];
+        if (sep <= margin) {
+            vec3<T> foot = x;
+            foot[i] = ref.side * R.half[i];
+            cand[nc++] = {foot, x, sep, face_id(ref) | (face_id(inc) << 3) | (buffer[in][e].feature << 6)};
+        }
     }
-    manifold<T> out{n, 0, {}};
-    add_best_four(out, std::span<const contact_point<T>>(cand.data(), nc));
+    vec3<T> local_n{};
+    local_n[i] = ref.side;
+    manifold<T> local{local_n, 0, {}};
+    add_best_four(local, std::span<const contact_point<T>>(cand.data(), nc));
+    manifold<T> out{n, local.count, {}};
+    for (std::size_t e = 0; e < local.count; ++e)
+        out.points[e] = {to_world(pr, local.points[e].point_a), to_world(pr, local.points[e].point_b), local.points[e].separation, local.points[e].id};
     return out;
 }
 

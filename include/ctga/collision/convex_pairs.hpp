@@ -5,9 +5,10 @@
 //   cores apart by δ (GJK, gjk.hpp):      distance = δ − r_A − r_B along the cores' closest points;
 //   cores overlapping by p (EPA, epa.hpp): distance = −p − r_A − r_B along EPA's normal,
 // the witnesses moved out by the radii along the normal. Cores within rounding of each other
-// (1024 ε of the simplex's size) go to EPA, which tells touching from overlapping. GJK's tolerance 1e-14 is relative to the
-// distance squared, EPA's 1e-12 relative to the size of the Minkowski difference: exact to rounding
-// for polytopes, for curved cores (a cylinder's rim) within the tolerance of the sampled curve.
+// (1024 ε of the simplex's size) go to EPA, which tells touching from overlapping. GJK's
+// tolerance 1e-14 is relative to the distance squared, EPA's 1e-12 relative to the size of the
+// Minkowski difference: exact to rounding for polytopes, for curved cores (a cylinder's rim)
+// within the tolerance of the sampled curve.
 // A half-space and any convex shape: its deepest point along −n is the support point along −n
 // (less the radius), as in primitive_pairs.hpp's closed forms.
 #pragma once
@@ -35,17 +36,18 @@ concept convex_shape = requires(const S& s, const vec3<T>& u) {
 template <class A, class B, class T>
 [[nodiscard]] constexpr separation<T> convex_separation(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb) noexcept {
     const T ra = core_radius(a), rb = core_radius(b);
-    const gjk_detail::run_result<T> g = gjk_detail::run(a, pa, b, pb, T(1e-14));
+    gjk_detail::simplex<T> last;
+    const gjk_result<T> result = gjk_detail::run(a, pa, b, pb, T(1e-14), last);
     // apart by more than rounding (a face resting on a face can leave the origin 1e-16 off GJK's
     // last triangle while the cores overlap: that is EPA's to decide)
     T size = T(0);
-    for (std::size_t i = 0; i < g.last.n; ++i) size = size > length(g.last.v[i].w) ? size : length(g.last.v[i].w);
-    if (!g.result.overlap && g.result.distance > T(1024) * std::numeric_limits<T>::epsilon() * size) {
-        const vec3<T> d = linear3::sub(g.result.point_b, g.result.point_a);
+    for (std::size_t i = 0; i < last.n; ++i) size = size > length(last.v[i].w) ? size : length(last.v[i].w);
+    if (!result.overlap && result.distance > T(1024) * std::numeric_limits<T>::epsilon() * size) {
+        const vec3<T> d = linear3::sub(result.point_b, result.point_a);
         const vec3<T> n = linear3::scale(T(1) / length(d), d);
-        return {g.result.distance - ra - rb, n, linear3::add_scaled(g.result.point_a, ra, n), linear3::add_scaled(g.result.point_b, -rb, n)};
+        return {result.distance - ra - rb, n, linear3::add_scaled(result.point_a, ra, n), linear3::add_scaled(result.point_b, -rb, n)};
     }
-    const penetration<T> p = epa(a, pa, b, pb, g.last, T(1e-12));
+    const penetration<T> p = epa(a, pa, b, pb, last, T(1e-12));
     return {-p.depth - ra - rb, p.normal, linear3::add_scaled(p.point_a, ra, p.normal), linear3::add_scaled(p.point_b, -rb, p.normal)};
 }
 

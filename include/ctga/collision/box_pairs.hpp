@@ -191,11 +191,11 @@ template <class T>
     }
     vec3<T> local_n{};
     local_n[i] = ref.side;
-    manifold<T> local{local_n, 0, {}};
+    manifold<T> local(local_n);
     add_best_four(local, std::span<const contact_point<T>>(cand.data(), nc));
-    manifold<T> out{n, local.count, {}};
+    manifold<T> out(n);
     for (std::size_t e = 0; e < local.count; ++e)
-        out.points[e] = {to_world(pr, local.points[e].point_a), to_world(pr, local.points[e].point_b), local.points[e].separation, local.points[e].id};
+        out.add({to_world(pr, local.points[e].point_a), to_world(pr, local.points[e].point_b), local.points[e].separation, local.points[e].id});
     return out;
 }
 
@@ -218,7 +218,7 @@ template <class T>
     const auto [eb, idb] = edge(b, pb, j, linear3::scale(T(-1), n));
     const primitive_detail::closest_pair<T> c = primitive_detail::closest_points(ea, eb);
     const T sep = linear3::dot(n, linear3::sub(c.q, c.p));
-    manifold<T> out{n, 0, {}};
+    manifold<T> out(n);
     if (sep <= margin)
         out.add({c.p, c.q, sep, static_cast<std::uint32_t>((1u << 31) | ((3 * i + j) << 4) | (ida << 2) | idb)});
     return out;
@@ -273,7 +273,7 @@ template <class T>
                                                      const motor_map<T>& pb, const T& margin) noexcept {
     const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb, -margin);
     // apart by more than the margin along an axis: no contact (a lower bound of the distance)
-    if (-ax.depth > margin) return manifold<T>{ax.normal, 0, {}};
+    if (-ax.depth > margin) return manifold<T>(ax.normal);
     return box_detail::overlap_manifold(a, pa, b, pb, ax, margin);
 }
 

@@ -88,7 +88,7 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr manifold<T> cut(const feature<T>& R, const T& rr, const feature<T>& I, const T& ri, const vec3<T>& n,
                                         const vec3<T>& plane_point, const T& margin) noexcept {
-    manifold<T> m{n, 0, {}};
+    manifold<T> m(n);
     std::array<contact_point<T>, max_clipped> cand{};
     std::size_t nc = 0;
     if (R.count >= 3 || R.count == 0) {
@@ -134,7 +134,7 @@ template <class A, class B, class T>
 [[nodiscard]] constexpr manifold<T> convex_manifold(const A& a, const motor_map<T>& pa, const B& b, const motor_map<T>& pb,
                                                     const separation<T>& s, const T& margin) noexcept {
     using namespace convex_manifold_detail;
-    manifold<T> m{s.normal, 0, {}};
+    manifold<T> m(s.normal);
     if (!(s.distance <= margin)) return m;
     const feature<T> fa = support_feature(a, pa, s.normal), fb = support_feature(b, pb, linear3::scale(T(-1), s.normal));
     if (fa.count == 1 || fb.count == 1) {

@@ -35,7 +35,7 @@ template <class T>
                                                      const motor_map<T>& pb, const T& margin) noexcept {
     const vec3<T> n = axis_of(pa, 2);
     const primitive_detail::segment<T> B = primitive_detail::core_of(b, pb);
-    manifold<T> m{n, 0, {}};
+    manifold<T> m(n);
     for (std::uint32_t end = 0; end < 2; ++end) {
         const vec3<T> e = linear3::add_scaled(B.centre, end == 0 ? T(-1) : T(1), B.half);
         const contact_point<T> p = manifold_detail::on_plane(pa, n, linear3::add_scaled(e, -b.radius, n), end);
@@ -63,7 +63,7 @@ template <class T>
     for (std::uint32_t c = 0; c < 8; ++c)
         height[c] = base + ((c & 1u) ? k[0] : -k[0]) + ((c & 2u) ? k[1] : -k[1]) + ((c & 4u) ? k[2] : -k[2]);
     // the four deepest, by selection (each pass takes the deepest left, ties to the lower id)
-    manifold<T> m{n, 0, {}};
+    manifold<T> m(n);
     std::uint32_t taken = 0;
     for (std::size_t pass = 0; pass < 4; ++pass) {
         std::uint32_t best = 8;
@@ -88,7 +88,7 @@ template <class T>
     using namespace primitive_detail;
     const segment<T> A = core_of(a, pa), B = core_of(b, pb);
     const separation<T> s = separation_between(a, pa, b, pb);
-    manifold<T> m{s.normal, 0, {}};
+    manifold<T> m(s.normal);
     if (!(s.distance <= margin)) return m;
     const T la = linear3::dot(A.half, A.half), lb = linear3::dot(B.half, B.half);
     const vec3<T> c = linear3::cross(A.half, B.half);

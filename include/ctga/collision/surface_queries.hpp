@@ -123,7 +123,7 @@ constexpr surface_contacts contacts_of(const S& s, const motor_map<T>& ps, const
             }
             for (std::size_t i = 0; i < m.count; ++i) {
                 if (g[k].count == group_points) {  // full: its best four stay
-                    manifold<T> four{g[k].normal, 0, {}};
+                    manifold<T> four(g[k].normal);
                     add_best_four(four, std::span<const contact_point<T>>(g[k].point.data(), g[k].count));
                     for (std::size_t j = 0; j < four.count; ++j) g[k].point[j] = four.points[j];
                     g[k].count = four.count;
@@ -147,7 +147,7 @@ constexpr surface_contacts contacts_of(const S& s, const motor_map<T>& ps, const
     const std::size_t count = groups < out.size() ? groups : out.size();
     for (std::size_t k = 0; k < count; ++k) {
         const group<T>& G = g[rank[k]];
-        manifold<T> m{G.normal, 0, {}};
+        manifold<T> m(G.normal);
         add_best_four(m, std::span<const contact_point<T>>(G.point.data(), G.count));
         m.normal = linear3::apply(ps.R, m.normal);
         for (std::size_t i = 0; i < m.count; ++i) {
@@ -165,7 +165,7 @@ template <class S, class B, class T>
                                                      const T& margin) noexcept {
     std::array<manifold<T>, 1> one{};
     const surface_contacts c = contacts_of(s, ps, b, pb, margin, std::span<manifold<T>>(one));
-    if (c.count == 0) return manifold<T>{separation_between(s, ps, b, pb).normal, 0, {}};
+    if (c.count == 0) return manifold<T>(separation_between(s, ps, b, pb).normal);
     return one[0];
 }
 

@@ -13,6 +13,8 @@
 #include <utility>
 
 #include <ctga/collision/gjk.hpp>
+#include <ctga/collision/line_of_action.hpp>
+#include <ctga/mechanics/screw.hpp>
 #include <ctga/collision/narrowphase.hpp>
 #include <ctga/mechanics/motor.hpp>
 
@@ -282,4 +284,21 @@ TEST_CASE("collision: manifolds: a box resting on a box gives its bottom corners
     const co::manifold<double> r = co::contact_of(small, on_top, table, ground, 0.005);
     REQUIRE(r.count == 4);
     CHECK(std::abs(r.normal[2] + 1) <= 1e-15);
+}
+
+TEST_CASE("collision: a contact's normal force is a line, a co-screw whose pairing with a body's screw is the point's normal speed") {
+    std::mt19937_64 rng(91);
+    std::normal_distribution<double> g;
+    for (int k = 0; k < 50; ++k) {
+        const vec3<double> x{g(rng), g(rng), g(rng)}, w{g(rng), g(rng), g(rng)}, v{g(rng), g(rng), g(rng)};
+        vec3<double> n{g(rng), g(rng), g(rng)};
+        n = ctga::linear3::scale(1 / co::length(n), n);
+        const ctga::coscrew<double> P = co::line_of_action(x, n);
+        // a line: moment ⟂ direction
+        CHECK(std::abs(P[0] * P[3] + P[1] * P[4] + P[2] * P[5]) <= 1e-14);
+        // the pairing (the paper's P ∨ (Q0 ∧ s)) is the speed along n of the body point at x
+        const ctga::screw<double> s{w[0], w[1], w[2], v[0], v[1], v[2]};
+        const double speed = ctga::linear3::dot(n, ctga::linear3::add(v, ctga::linear3::cross(w, x)));
+        CHECK(std::abs(ctga::pairing(P, s) - speed) <= 1e-13);
+    }
 }

@@ -9,7 +9,9 @@
 //   geometry/     ready-made Cl(3,0,1) (namespace ctga::pga): points, lines, planes, motors
 //   mechanics/    the paper: algebras, screw, coscrew, motor, the inertias (mass properties,
 //                 representations, 6×6 matrices, momentum and energy, transforms), dynamics, convert
-//   collision/    shapes posed by their bodies' motors, their mass, the separation of two shapes
+//   collision/    shapes posed by their bodies' motors and their mass; separations, contact
+//                 manifolds, ray casts, time of impact (shape_set.hpp), the broadphase, a contact
+//                 force as a co-screw
 //   integrators/  the motion-model interface, methods stepping any model, ctga's rigid-body model
 //   scenes/       body kinds, scenes of many bodies, batches
 //   chains/       kinematic trees: joints, the tree type, FK, RNEA, CRBA, ABA, Jacobians (one header
@@ -18,7 +20,10 @@
 
 #include "ctga/chains/algorithms.hpp"
 #include "ctga/chains/motion.hpp"
-#include "ctga/collision/narrowphase.hpp"
+#include "ctga/collision/broadphase.hpp"
+#include "ctga/collision/line_of_action.hpp"
+#include "ctga/collision/shape_set.hpp"
+#include "ctga/collision/time_of_impact.hpp"
 #include "ctga/core.hpp"
 #include "ctga/geometry/pga.hpp"
 #include "ctga/integrators/integrate.hpp"

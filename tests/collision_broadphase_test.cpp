@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory_resource>
 #include <random>
 #include <span>
 #include <utility>
@@ -467,4 +468,27 @@ TEST_CASE("broadphase: non-finite and inverted boxes are refused, the proxy keep
     // a float broadphase the same
     co::broadphase<float> bf(2, 2, 0.1f);
     CHECK(bf.create_proxy({{0, 0, 0}, {std::numeric_limits<float>::infinity(), 1, 1}}, 0).error == error_code::non_finite);
+}
+
+TEST_CASE("broadphase: storage from a caller's buffer (no heap): bytes_for suffices and the pairs are the heap's") {
+    constexpr std::size_t proxies = 200, pairs = 2000;
+    static std::array<std::byte, co::broadphase<double>::bytes_for(proxies, pairs)> buffer;
+    std::pmr::monotonic_buffer_resource arena(buffer.data(), buffer.size(), std::pmr::null_memory_resource());
+    co::broadphase<double> in_buffer(proxies, pairs, 0.1, &arena);  // (null behind it: running out would abort)
+    co::broadphase<double> on_heap(proxies, pairs, 0.1);
+    std::mt19937_64 rng(57);
+    std::uniform_real_distribution<double> at(0.0, 6.0), size(0.1, 0.6);
+    for (std::size_t i = 0; i < proxies; ++i) {
+        const ctga::vec3<double> lo{at(rng), at(rng), at(rng)};
+        const co::aabb<double> b{lo, {lo[0] + size(rng), lo[1] + size(rng), lo[2] + size(rng)}};
+        REQUIRE(in_buffer.create_proxy(b, i));
+        REQUIRE(on_heap.create_proxy(b, i));
+    }
+    std::vector<co::proxy_pair> a(pairs), b(pairs);
+    const auto na = in_buffer.pairs(a), nb = on_heap.pairs(b);
+    REQUIRE(na);
+    REQUIRE(nb);
+    CHECK(*na == *nb);
+    CHECK(*na > 50);
+    for (std::size_t k = 0; k < *na; ++k) CHECK(a[k] == b[k]);
 }

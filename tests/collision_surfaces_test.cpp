@@ -268,3 +268,21 @@ TEST_CASE("collision: a scene's shape kinds as variants: the queries visit only 
         }
     }
 }
+
+TEST_CASE("collision: float meshes and height fields") {
+    std::vector<float> h(16, 0.5f);
+    std::vector<co::bvh_node<float>> nodes(co::bvh_nodes_for(9));
+    std::vector<std::uint32_t> order(9);
+    const auto field = co::make_height_field<float>(4, 4, 1.0f, 1.0f, h, nodes, order);
+    REQUIRE(field);
+    const ctga::motor_map<float> id{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
+    const ctga::motor_map<float> above{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {1.3f, 1.7f, 1.0f}};
+    const co::separation<float> s = co::separation_of(*field, id, *co::make_sphere(0.25f), above);
+    CHECK(std::abs(s.distance - 0.25f) <= 1e-6f);
+    CHECK(std::abs(s.normal[2] - 1.0f) <= 1e-6f);
+    const auto hit = co::ray_cast(*field, id, co::make_ray(ctga::vec3<float>{1.3f, 1.7f, 2.0f}, ctga::vec3<float>{0, 0, -1}, 5.0f));
+    REQUIRE(hit.hit);
+    CHECK(std::abs(hit.distance - 1.5f) <= 1e-6f);
+    const co::manifold<float> m = co::contact_of(*field, id, *co::make_box(0.3f, 0.2f, 0.1f), ctga::motor_map<float>{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {1.5f, 1.5f, 0.599f}}, 0.0f);
+    CHECK(m.count == 4);
+}

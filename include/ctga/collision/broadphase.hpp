@@ -23,8 +23,9 @@
 // (b.category & a.mask), unless they share a non-zero group: then always (group > 0) or never
 // (group < 0). Bodies joined by a joint are left out by the scene layer's predicate given to
 // pairs(), may_collide(user_a, user_b) (false for a jointed pair), applied when the pairs are written.
-// Storage: allocated once, by the constructor: proxy_capacity + 1 nodes, proxy_capacity proxies, 4
-// pair_capacity keys of 8 bytes; nothing allocates afterwards. The walks (pairs, query,
+// Storage: allocated once, by the constructor, from a std::pmr::memory_resource (the heap by
+// default; a caller's buffer for a build without one): proxy_capacity + 1 nodes, proxy_capacity
+// proxies, 4 pair_capacity keys of 8 bytes; nothing allocates afterwards. The walks (pairs, query,
 // ray_query) keep the nodes still to visit on a stack of 64 in the function, pushed without
 // branches and fetched ahead; a tree taller than that is walked by its parent links instead.
 // Chosen by measurement on bench/collision_broadphase.cpp (10,000 boxes moving each step, ~18,600
@@ -45,6 +46,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <memory_resource>
 #include <span>
 #include <type_traits>
 #include <utility>
@@ -80,20 +82,31 @@ template <std::floating_point T = double>
 class broadphase {
 public:
     // Room for proxy_capacity (< 2³⁰) proxies and pair_capacity pairs; fat boxes grown by margin ≥ 0.
-    broadphase(std::size_t proxy_capacity, std::size_t pair_capacity, T margin)
+    // The storage comes from `storage` once, here (the default: the heap); without a heap, a
+    // std::pmr::monotonic_buffer_resource over a buffer of bytes_for(…) bytes with
+    // std::pmr::null_memory_resource() behind it.
+    broadphase(std::size_t proxy_capacity, std::size_t pair_capacity, T margin,
+               std::pmr::memory_resource* storage = std::pmr::get_default_resource())
         : margin_(margin),
-          nodes_(proxy_capacity + 1),
-          proxies_(proxy_capacity),
-          touched_list_(proxy_capacity),
-          pairs_(pair_capacity),
-          next_pairs_(pair_capacity),
-          found_(pair_capacity),
-          scratch_(pair_capacity) {
+          nodes_(proxy_capacity + 1, storage),
+          proxies_(proxy_capacity, storage),
+          touched_list_(proxy_capacity, storage),
+          pairs_(pair_capacity, storage),
+          next_pairs_(pair_capacity, storage),
+          found_(pair_capacity, storage),
+          scratch_(pair_capacity, storage) {
         assert(proxy_capacity < (std::size_t{1} << 30) && margin >= T(0));
         while ((std::uint64_t{1} << id_bits_) < proxy_capacity) ++id_bits_;
         for (std::size_t i = 1; i < nodes_.size(); ++i) nodes_[i].parent = i + 1 < nodes_.size() ? static_cast<std::int32_t>(i + 1) : 0;
         free_node_ = nodes_.size() > 1 ? 1 : 0;
         for (std::size_t i = 0; i < proxies_.size(); ++i) proxies_[i].location = static_cast<std::int32_t>(i + 1);
+    }
+
+    // The bytes a broadphase of these capacities takes from its storage (with room to align each of
+    // its seven arrays).
+    [[nodiscard]] static constexpr std::size_t bytes_for(std::size_t proxy_capacity, std::size_t pair_capacity) noexcept {
+        return (proxy_capacity + 1) * sizeof(node) + proxy_capacity * (sizeof(proxy) + sizeof(proxy_id)) +
+               4 * pair_capacity * sizeof(std::uint64_t) + 7 * alignof(std::max_align_t) + 7 * alignof(node);
     }
 
     // ---- proxies ----
@@ -592,10 +605,10 @@ private:
     }
 
     T margin_;
-    std::vector<node> nodes_;  // [0] the sentinel, the rest inner nodes
-    std::vector<proxy> proxies_;
-    std::vector<proxy_id> touched_list_;
-    std::vector<std::uint64_t> pairs_, next_pairs_, found_, scratch_;  // pair keys: a << id_bits_ | b, a < b
+    std::pmr::vector<node> nodes_;  // [0] the sentinel, the rest inner nodes
+    std::pmr::vector<proxy> proxies_;
+    std::pmr::vector<proxy_id> touched_list_;
+    std::pmr::vector<std::uint64_t> pairs_, next_pairs_, found_, scratch_;  // pair keys: a << id_bits_ | b, a < b
     std::int32_t free_node_ = 0;
     proxy_id free_proxy_ = 0;
     std::size_t count_ = 0, touched_count_ = 0, pair_count_ = 0;

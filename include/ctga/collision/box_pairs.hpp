@@ -46,69 +46,73 @@ struct axis_choice {
 // h_B,j − |Σ_i D_i C_ij|, and along L = a_i × b_j (with (i, i1, i2) and (j, j1, j2) cyclic:
 // L = (…, −C_i2j, C_i1j) in A's frame, |L| = √(C_i1j² + C_i2j²)) it is
 // (h_A,i1 |C_i2j| + h_A,i2 |C_i1j| + h_B,j1 |C_ij2| + h_B,j2 |C_ij1| − |D_i2 C_i1j − D_i1 C_i2j|) / |L|.
-// The scan stops at the first axis whose depth is below `stop` (−margin: apart by more than the
-// margin; 0: apart, which is all a distance query needs to know before GJK).
+// The scan stops at the first face axis whose depth is below `stop` (−margin: apart by more than
+// the margin; 0: apart, which is all a distance query needs to know before GJK).
 template <class T>
 [[nodiscard]] constexpr axis_choice<T> least_overlap(const box<T>& a, const motor_map<T>& pa, const box<T>& b, const motor_map<T>& pb,
                                                     const T& stop) noexcept {
-    std::array<std::array<T, 3>, 3> C{}, A{};  // A = |C|
+    constexpr std::size_t next[3] = {1, 2, 0}, after[3] = {2, 0, 1};
+    std::array<T, 9> C{}, A{};  // row-major, A = |C|
     for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) {
-            C[i][j] = pa.R[0][i] * pb.R[0][j] + pa.R[1][i] * pb.R[1][j] + pa.R[2][i] * pb.R[2][j];
-            A[i][j] = absolute(C[i][j]);
+            C[3 * i + j] = pa.R[0][i] * pb.R[0][j] + pa.R[1][i] * pb.R[1][j] + pa.R[2][i] * pb.R[2][j];
+            A[3 * i + j] = absolute(C[3 * i + j]);
         }
     const vec3<T> D = to_body(pa, pb.t);
     const vec3<T>& ha = a.half;
     const vec3<T>& hb = b.half;
-    axis_choice<T> best{T(0), {}, -1, 0, 0};
-    vec3<T> local{};  // the best axis in A's frame, signed towards B
-    // faces first: an edge axis wins only by more than `bias` (a relative 1e-9 of the sizes)
-    const T bias = T(1e-9) * (ha[0] + hb[0]);
-    const auto consider = [&](const T& depth, const T& s, const vec3<T>& L, int kind, std::size_t i, std::size_t j, const T& by) {
-        if (best.kind < 0 || depth + by < best.depth) {
-            best = {depth, {}, kind, i, j};
-            local = s < T(0) ? linear3::scale(T(-1), L) : L;
+    // the 15 axes' overlaps x (to be divided by the axis length l) and L·D = s: faces 0–5, then
+    // the edges 6 + 3i + j, each a straight-line formula (the compiler keeps them in registers and
+    // takes the nine square roots together)
+    std::array<T, 15> x{}, s{};
+    const auto answer = [&](std::size_t k, const T& depth, const T& l) {
+        vec3<T> L{};
+        axis_choice<T> out{depth, {}, k < 3 ? 0 : k < 6 ? 1 : 2, 0, 0};
+        if (k < 3) L[k] = T(1), out.i = k;
+        else if (k < 6) L = {C[k - 3], C[3 + k - 3], C[6 + k - 3]}, out.j = k - 3;
+        else {
+            const std::size_t i = (k - 6) / 3, j = (k - 6) % 3;
+            out.i = i, out.j = j;
+            L[next[i]] = -C[3 * after[i] + j] / l;
+            L[after[i]] = C[3 * next[i] + j] / l;
         }
-        return depth < stop;
-    };
-    const auto finish = [&] {
-        best.normal = linear3::apply(pa.R, local);
-        return best;
+        out.normal = linear3::apply(pa.R, s[k] < T(0) ? linear3::scale(T(-1), L) : L);
+        return out;
     };
     for (std::size_t i = 0; i < 3; ++i) {
-        vec3<T> L{};
-        L[i] = T(1);
-        if (consider(ha[i] + hb[0] * A[i][0] + hb[1] * A[i][1] + hb[2] * A[i][2] - absolute(D[i]), D[i], L, 0, i, 0, T(0))) return finish();
+        s[i] = D[i];
+        x[i] = ha[i] + hb[0] * A[3 * i] + hb[1] * A[3 * i + 1] + hb[2] * A[3 * i + 2] - absolute(D[i]);
+        if (x[i] < stop) return answer(i, x[i], T(1));
     }
     for (std::size_t j = 0; j < 3; ++j) {
-        const T s = D[0] * C[0][j] + D[1] * C[1][j] + D[2] * C[2][j];
-        if (consider(ha[0] * A[0][j] + ha[1] * A[1][j] + ha[2] * A[2][j] + hb[j] - absolute(s), s, vec3<T>{C[0][j], C[1][j], C[2][j]}, 1, 0, j, T(0)))
-            return finish();
+        s[3 + j] = D[0] * C[j] + D[1] * C[3 + j] + D[2] * C[6 + j];
+        x[3 + j] = ha[0] * A[j] + ha[1] * A[3 + j] + ha[2] * A[6 + j] + hb[j] - absolute(s[3 + j]);
+        if (x[3 + j] < stop) return answer(3 + j, x[3 + j], T(1));
     }
-    // the edges: depth (r − |s|)/l beats the best when r − |s| < (best − bias) l, so that only an
-    // axis that wins is divided by its length (and made unit at the end)
-    T length_of_best = T(1);
-    for (std::size_t i = 0; i < 3; ++i) {
-        const std::size_t i1 = (i + 1) % 3, i2 = (i + 2) % 3;
+    std::array<T, 9> l{};
+    for (std::size_t i = 0; i < 3; ++i)
         for (std::size_t j = 0; j < 3; ++j) {
-            const std::size_t j1 = (j + 1) % 3, j2 = (j + 2) % 3;
-            const T l = math::sqrt(C[i1][j] * C[i1][j] + C[i2][j] * C[i2][j]);
-            if (!(l > T(1e-6))) continue;  // a_i ∥ b_j: the face axes cover it
-            const T s = D[i2] * C[i1][j] - D[i1] * C[i2][j];
-            const T r = ha[i1] * A[i2][j] + ha[i2] * A[i1][j] + hb[j1] * A[i][j2] + hb[j2] * A[i][j1];
-            const T x = r - absolute(s);
-            if (!(x < (best.depth - bias) * l)) continue;
-            best = {x / l, {}, 2, i, j};
-            local = {};
-            local[i1] = s < T(0) ? C[i2][j] : -C[i2][j];
-            local[i2] = s < T(0) ? -C[i1][j] : C[i1][j];
-            length_of_best = l;
-            if (best.depth < stop) break;
+            const std::size_t k = 3 * i + j, i1 = next[i], i2 = after[i];
+            l[k] = C[3 * i1 + j] * C[3 * i1 + j] + C[3 * i2 + j] * C[3 * i2 + j];
+            s[6 + k] = D[i2] * C[3 * i1 + j] - D[i1] * C[3 * i2 + j];
+            x[6 + k] = ha[i1] * A[3 * i2 + j] + ha[i2] * A[3 * i1 + j] + hb[next[j]] * A[3 * i + after[j]] +
+                       hb[after[j]] * A[3 * i + next[j]] - absolute(s[6 + k]);
         }
-        if (best.depth < stop) break;
-    }
-    local = linear3::scale(T(1) / length_of_best, local);
-    return finish();
+    for (std::size_t k = 0; k < 9; ++k) l[k] = math::sqrt(l[k]);
+    // the least: faces first; an edge axis (made unit: x/l) wins only by more than `bias` (a
+    // relative 1e-9 of the sizes), and is skipped when a_i ∥ b_j (the face axes cover it); the
+    // comparison x < (best − bias) l divides only the axis that wins
+    std::size_t best = 0;
+    T depth = x[0];
+    for (std::size_t k = 1; k < 6; ++k)
+        if (x[k] < depth) depth = x[k], best = k;
+    const T bias = T(1e-9) * (ha[0] + hb[0]);
+    for (std::size_t k = 0; k < 9; ++k)
+        if (l[k] > T(1e-6) && x[6 + k] < (depth - bias) * l[k]) {
+            depth = x[6 + k] / l[k], best = 6 + k;
+            if (depth < stop) break;
+        }
+    return answer(best, depth, best < 6 ? T(1) : l[best - 6]);
 }
 
 // The face of box b (pose p) whose outward normal is most against n: axis k, side ±1.

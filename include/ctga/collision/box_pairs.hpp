@@ -198,8 +198,10 @@ template <class T>
     manifold<T> local(local_n);
     add_best_four(local, std::span<const contact_point<T>>(cand.data(), nc));
     manifold<T> out(n);
-    for (std::size_t e = 0; e < local.count; ++e)
-        out.add({to_world(pr, local.points[e].point_a), to_world(pr, local.points[e].point_b), local.points[e].separation, local.points[e].id});
+    for (std::size_t e = 0; e < local.count; ++e) {
+        const vec3<T> on_b = to_world(pr, local.points[e].point_b);  // its foot on the face: sep · n below
+        out.add({linear3::add_scaled(on_b, -local.points[e].separation, n), on_b, local.points[e].separation, local.points[e].id});
+    }
     return out;
 }
 

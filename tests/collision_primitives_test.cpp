@@ -286,6 +286,44 @@ TEST_CASE("collision: manifolds: a box resting on a box gives its bottom corners
     CHECK(std::abs(r.normal[2] + 1) <= 1e-15);
 }
 
+TEST_CASE("collision: box-box manifolds at random poses: distinct ids, witnesses on the boxes, separations along the normal") {
+    // facts of any correct manifold, whatever produced it: each point's witnesses lie on (or in)
+    // their box, point_b − point_a = separation · n, the separation at most the margin and at least
+    // the penetration depth; no two points share an id (a solver warm starts by id)
+    std::mt19937_64 rng(97);
+    std::uniform_real_distribution<double> size(0.1, 0.6), margin_of(0.0, 0.05);
+    const auto inside = [](const co::box<double>& b, const ctga::motor_map<double>& p, const vec3<double>& x) {
+        const vec3<double> y = co::to_body(p, x);
+        double out = 0;
+        for (std::size_t k = 0; k < 3; ++k) out = std::max(out, std::abs(y[k]) - b.half[k]);
+        return out;  // > 0: outside by that much
+    };
+    std::size_t manifolds = 0, points = 0;
+    for (int it = 0; it < 3000; ++it) {
+        const co::box<double> a = *co::make_box(size(rng), size(rng), size(rng)), b = *co::make_box(size(rng), size(rng), size(rng));
+        const ctga::motor_map<double> pa = random_posed(rng, {0, 0, 0}, 0.5).map, pb = random_posed(rng, {0, 0, 0}, 0.5).map;
+        const double margin = it % 2 ? 0.0 : margin_of(rng);
+        const co::manifold<double> m = co::contact_of(a, pa, b, pb, margin);
+        const co::separation<double> d = co::separation_of(a, pa, b, pb);
+        if (m.count == 0) {
+            CHECK(d.distance > margin - 1e-12);
+            continue;
+        }
+        ++manifolds, points += m.count;
+        for (std::size_t i = 0; i < m.count; ++i) {
+            const co::contact_point<double>& c = m.points[i];
+            CHECK(inside(a, pa, c.point_a) <= 1e-12);
+            CHECK(inside(b, pb, c.point_b) <= 1e-12);
+            CHECK(c.separation <= margin + 1e-12);
+            CHECK(c.separation >= d.distance - 1e-12);
+            for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(c.point_b[k] - c.point_a[k] - c.separation * m.normal[k]) <= 1e-12);
+            for (std::size_t j = i + 1; j < m.count; ++j) CHECK(c.id != m.points[j].id);
+        }
+    }
+    CHECK(manifolds > 1000);
+    CHECK(points > 2 * manifolds);  // faces as well as edges
+}
+
 TEST_CASE("collision: a contact's normal force is a line, a co-screw whose pairing with a body's screw is the point's normal speed") {
     std::mt19937_64 rng(91);
     std::normal_distribution<double> g;

@@ -8,10 +8,13 @@
 // face of the axis) and the incident face of the other box (its face most against n); the incident
 // face's corners clipped by the reference face's four side planes (Sutherland–Hodgman) are the
 // candidates, kept within the margin, at most four (the deepest, the farthest from it, then the
-// two that span the most area). Each point's id is its features: the reference face (0–5: axis
-// 2i, + side 1), the incident face, and the corner (0–3) or the incident edge (4 + 4e) cut by side
-// plane p (+ p). An edge axis gives one point, the closest points of the two edges (id: bit 31,
-// the axes and the edges).
+// two that span the most area). The part of the incident face within the margin is cut first
+// (clip_faces), so that the side planes meet a corner's triangle when the boxes touch. Each
+// point's id is its features: the reference face (0–5: axis 2i, + side 1), the incident face, and
+// the corner (0–3), the incident edge e cut by side plane p (4 + 4e + p) or the corner of side
+// planes p, p' (20 + 4p + p'): no two points of a manifold share one. An edge axis gives one
+// point, the closest points of the two edges (id: bit 31, the axes and the edges); apart within
+// the margin, GJK's closest points (the axis bounds the distance from below only).
 // The separation's witnesses when overlapping are the manifold's deepest point: for a face axis
 // the incident box's deepest corner when it lies over the reference face (no clipping needed).
 #pragma once
@@ -19,6 +22,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include "ctga/collision/box.hpp"
@@ -28,6 +32,7 @@
 #include "ctga/collision/separation.hpp"
 #include "ctga/mechanics/linear3.hpp"
 #include "ctga/mechanics/motor.hpp"
+#include "ctga/support/inline.hpp"
 
 namespace ctga::collision {
 namespace box_detail {
@@ -65,7 +70,7 @@ template <class T>
     // the edges 6 + 3i + j, each a straight-line formula (the compiler keeps them in registers and
     // takes the nine square roots together)
     std::array<T, 15> x{}, s{};
-    const auto answer = [&](std::size_t k, const T& depth, const T& l) {
+    const auto answer = [&](std::size_t k, const T& depth, const T& l) CTGA_INLINE_LAMBDA {
         vec3<T> L{};
         axis_choice<T> out{depth, {}, k < 3 ? 0 : k < 6 ? 1 : 2, 0, 0};
         if (k < 3) L[k] = T(1), out.i = k;
@@ -115,92 +120,125 @@ template <class T>
     return answer(best, depth, best < 6 ? T(1) : l[best - 6]);
 }
 
-// The face of box b (pose p) whose outward normal is most against n: axis k, side ±1.
+// A point of the incident face in the reference face's coordinates: u, v along the reference
+// box's two axes across its face (i + 1, i + 2: with the face axis i a right-handed frame), s its
+// separation (its height over the face); the incident edge it lies on (a corner: the edge that
+// leaves it), the lines it lies on (bits 0–3 the side planes, bit 4 the depth line s = margin,
+// where the part within the margin was cut from the face), and its feature: corner 0–3, incident
+// edge e cut by side plane p 4 + 4e + p, or the corner of side planes p < p' 20 + 4p + p'.
 template <class T>
-struct face {
-    std::size_t axis;
-    T side;
-};
-template <class T>
-[[nodiscard]] constexpr face<T> most_against(const motor_map<T>& p, const vec3<T>& n) noexcept {
-    std::size_t k = 0;
-    for (std::size_t i = 1; i < 3; ++i)
-        if (absolute(linear3::dot(n, axis_of(p, i))) > absolute(linear3::dot(n, axis_of(p, k)))) k = i;
-    return {k, linear3::dot(n, axis_of(p, k)) > T(0) ? T(-1) : T(1)};
-}
-template <class T>
-[[nodiscard]] constexpr std::uint32_t face_id(const face<T>& f) noexcept {
-    return static_cast<std::uint32_t>(2 * f.axis + (f.side > T(0) ? 1 : 0));
-}
-
-// A clipped corner: its position and its feature (corner 0–3, or 4 + 4 edge + side plane).
-template <class T>
-struct corner {
-    vec3<T> x;
+struct face_point {
+    T u, v, s;
     std::uint32_t feature;
+    std::uint8_t edge, lines;
 };
+inline constexpr std::uint8_t depth_line = 16;
 
-// Face manifold: reference box R (pose pr) with face axis i along n (n pointing away from R
-// towards the incident box I), incident box I.
-template <class T>
-[[nodiscard]] constexpr manifold<T> clip_faces(const box<T>& R, const motor_map<T>& pr, std::size_t i, const vec3<T>& n,
-                                               const box<T>& I, const motor_map<T>& pi, const T& margin) noexcept {
-    const face<T> ref{i, linear3::dot(n, axis_of(pr, i)) > T(0) ? T(1) : T(-1)};
-    const face<T> inc = most_against(pi, n);
-    // the incident face's corners in R's frame (a cycle around the face), where the side planes
-    // are |x_u| ≤ h_u, |x_v| ≤ h_v: clipping compares one coordinate
-    const std::size_t u = (inc.axis + 1) % 3, v = (inc.axis + 2) % 3;
-    const vec3<T> centre = to_body(pr, linear3::add_scaled(pi.t, inc.side * I.half[inc.axis], axis_of(pi, inc.axis)));
-    const vec3<T> eu = linear3::apply_transposed(pr.R, linear3::scale(I.half[u], axis_of(pi, u)));
-    const vec3<T> ev = linear3::apply_transposed(pr.R, linear3::scale(I.half[v], axis_of(pi, v)));
-    constexpr int su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};
-    std::array<std::array<corner<T>, 8>, 2> buffer;  // ping-pong (written before read)
-    std::size_t in = 0, count = 4;
-    for (std::uint32_t c = 0; c < 4; ++c)
-        buffer[0][c] = {linear3::add_scaled(linear3::add_scaled(centre, T(su[c]), eu), T(sv[c]), ev), c};
-    std::uint32_t plane = 0;
-    for (std::size_t s = 1; s < 3; ++s) {
-        const std::size_t k = (i + s) % 3;
-        for (int sign = -1; sign <= 1; sign += 2, ++plane) {
-            const std::array<corner<T>, 8>& poly = buffer[in];
-            std::array<corner<T>, 8>& next = buffer[1 - in];
-            std::size_t m = 0;
-            for (std::size_t e = 0; e < count; ++e) {
-                const corner<T>& p = poly[e];
-                const corner<T>& q = poly[e + 1 == count ? 0 : e + 1];
-                const T dp = T(sign) * p.x[k] - R.half[k], dq = T(sign) * q.x[k] - R.half[k];
-                if (dp <= T(0)) next[m++] = p;
-                if ((dp <= T(0)) != (dq <= T(0))) {
-                    const T t = dp / (dp - dq);
-                    const std::uint32_t edge = (p.feature) < 4 ? p.feature : ((p.feature - 4) / 4) % 4;
-                    next[m++] = {linear3::add_scaled(p.x, t, linear3::sub(q.x, p.x)), 4 + 4 * edge + plane};
-                }
-            }
-            in = 1 - in;
-            count = m;
-        }
-    }
-    // candidates within the margin: their height over the reference face; in R's frame, the normal
-    // ±e_i, turned to the world for the four kept
-    std::array<contact_point<T>, 8> cand;
-    std::size_t nc = 0;
+// One plane, sign · coordinate ≤ bound (Sutherland–Hodgman), the coordinate a member (every
+// access at a fixed offset: an element written at an index known only at run time and read back
+// as a vector stalls the store forwarding). A segment joining two points on one line lies on that
+// line: cut there, it gives the corner of two side planes (or a point of the depth line); else
+// it runs along its first point's incident edge.
+template <auto coordinate, class T>
+[[nodiscard]] constexpr std::size_t clip_by(const std::array<face_point<T>, 8>& poly, std::size_t count, std::array<face_point<T>, 8>& next,
+                                            const T& sign, const T& bound, std::uint32_t plane) noexcept {
+    std::size_t m = 0;
     for (std::size_t e = 0; e < count; ++e) {
-        const vec3<T>& x = buffer[in][e].x;
-        const T sep = ref.side * x[i] - R.half[i];
-        if (sep <= margin) {
-            vec3<T> foot = x;
-            foot[i] = ref.side * R.half[i];
-            cand[nc++] = {foot, x, sep, face_id(ref) | (face_id(inc) << 3) | (buffer[in][e].feature << 6)};
+        const face_point<T>& p = poly[e];
+        const face_point<T>& q = poly[e + 1 == count ? 0 : e + 1];
+        const T dp = sign * (p.*coordinate) - bound, dq = sign * (q.*coordinate) - bound;
+        if (dp <= T(0)) next[m++] = p;
+        if ((dp <= T(0)) != (dq <= T(0))) {
+            const T t = dp / (dp - dq);
+            const std::uint32_t shared = p.lines & q.lines & 15u;
+            const std::uint32_t first = (shared & 1u) ? 0 : (shared & 2u) ? 1 : (shared & 4u) ? 2 : 3;
+            const std::uint32_t feature = shared != 0 ? 20 + 4 * first + plane : 4 + 4 * std::uint32_t(p.edge) + plane;
+            next[m++] = {p.u + t * (q.u - p.u), p.v + t * (q.v - p.v), p.s + t * (q.s - p.s), feature, p.edge,
+                         static_cast<std::uint8_t>((p.lines & q.lines) | (1u << plane))};
         }
     }
-    vec3<T> local_n{};
-    local_n[i] = ref.side;
-    manifold<T> local(local_n);
-    add_best_four(local, std::span<const contact_point<T>>(cand.data(), nc));
+    return m;
+}
+
+// Face manifold: the reference face is box R's (pose pr) on axis i, facing the incident box I
+// along m (unit, from R towards I); n is the manifold's normal (from A to B: m, or −m when R is
+// B). The incident face is I's face most against m. The candidates are the corners of the
+// incident face clipped by the reference face's four side planes |u| ≤ h_R,i+1, |v| ≤ h_R,i+2
+// that lie within the margin (s ≤ margin): the same as the corners of the incident face's part
+// within the margin, so clipped, but for those on its depth line s = margin. That part is
+// clipped first (it is small when the boxes touch: a corner's triangle), and a side plane it
+// lies within is passed over.
+template <class T>
+[[nodiscard]] constexpr manifold<T> clip_faces(const box<T>& R, const motor_map<T>& pr, std::size_t i, const vec3<T>& m, const box<T>& I,
+                                               const motor_map<T>& pi, const vec3<T>& n, bool reference_is_a, const T& margin) noexcept {
+    constexpr std::size_t next[3] = {1, 2, 0}, after[3] = {2, 0, 1};
+    const vec3<T> a0 = axis_of(pr, i), a1 = axis_of(pr, next[i]), a2 = axis_of(pr, after[i]);
+    const T side = linear3::dot(m, a0) > T(0) ? T(1) : T(-1);  // the reference face: outward along m
+    // the incident face: I's axis k most along m, its side against m
+    const T d0 = linear3::dot(m, axis_of(pi, 0)), d1 = linear3::dot(m, axis_of(pi, 1)), d2 = linear3::dot(m, axis_of(pi, 2));
+    const T b0 = absolute(d0), b1 = absolute(d1), b2 = absolute(d2);
+    const std::size_t k = b0 >= b1 ? (b0 >= b2 ? 0 : 2) : (b1 >= b2 ? 1 : 2);
+    const T dk = k == 0 ? d0 : k == 1 ? d1 : d2;
+    const T inc_side = dk > T(0) ? T(-1) : T(1);
+    const std::size_t ku = next[k], kv = after[k];
+    const vec3<T> centre = linear3::sub(linear3::add_scaled(pi.t, inc_side * I.half[k], axis_of(pi, k)), pr.t);
+    const vec3<T> eu = linear3::scale(I.half[ku], axis_of(pi, ku)), ev = linear3::scale(I.half[kv], axis_of(pi, kv));
+    const vec3<T> out_of_face = linear3::scale(side, a0);
+    const auto local = [&](const vec3<T>& x) { return vec3<T>{linear3::dot(x, a1), linear3::dot(x, a2), linear3::dot(x, out_of_face)}; };
+    const vec3<T> c = linear3::sub(local(centre), vec3<T>{T(0), T(0), R.half[i]}), cu = local(eu), cv = local(ev);
+    constexpr int su[4] = {1, -1, -1, 1}, sv[4] = {1, 1, -1, -1};  // a cycle around the face
+    std::array<std::array<face_point<T>, 8>, 2> buffer;  // ping-pong (written before read)
+    for (std::uint32_t e = 0; e < 4; ++e)
+        buffer[1][e] = {c[0] + T(su[e]) * cu[0] + T(sv[e]) * cv[0], c[1] + T(su[e]) * cu[1] + T(sv[e]) * cv[1],
+                        c[2] + T(su[e]) * cu[2] + T(sv[e]) * cv[2], e, static_cast<std::uint8_t>(e), 0};
+    std::size_t count = clip_by<&face_point<T>::s>(buffer[1], 4, buffer[0], T(1), margin, 4);
+    std::size_t in = 0;
+    const T hu = R.half[next[i]], hv = R.half[after[i]];
+    T u_low = buffer[0][0].u, u_high = u_low, v_low = buffer[0][0].v, v_high = v_low;
+    for (std::size_t e = 1; e < count; ++e) {
+        u_low = buffer[0][e].u < u_low ? buffer[0][e].u : u_low;
+        u_high = buffer[0][e].u > u_high ? buffer[0][e].u : u_high;
+        v_low = buffer[0][e].v < v_low ? buffer[0][e].v : v_low;
+        v_high = buffer[0][e].v > v_high ? buffer[0][e].v : v_high;
+    }
+    if (count > 0 && (u_low < -hu || u_high > hu || v_low < -hv || v_high > hv)) {
+        const auto side_plane = [&]<auto coordinate>(const T& sign, const T& bound, std::uint32_t plane) {
+            bool outside = false;
+            for (std::size_t e = 0; e < count; ++e) outside = outside || sign * (buffer[in][e].*coordinate) > bound;
+            if (outside) count = clip_by<coordinate>(buffer[in], count, buffer[1 - in], sign, bound, plane), in = 1 - in;
+        };
+        side_plane.template operator()<&face_point<T>::u>(T(-1), hu, 0);
+        side_plane.template operator()<&face_point<T>::u>(T(1), hu, 1);
+        side_plane.template operator()<&face_point<T>::v>(T(-1), hv, 2);
+        side_plane.template operator()<&face_point<T>::v>(T(1), hv, 3);
+    }
+    // the candidates (not on the depth line), at most four kept (best_four in the frame (u, v, s),
+    // its normal (0, 0, 1)), turned to the world
+    std::array<std::uint8_t, 8> pick;
+    std::size_t np = 0;
+    for (std::size_t e = 0; e < count; ++e)
+        if (!(buffer[in][e].lines & depth_line) && buffer[in][e].s <= margin) pick[np++] = static_cast<std::uint8_t>(e);
+    const std::uint32_t faces = static_cast<std::uint32_t>(2 * i + (side > T(0) ? 1 : 0)) |
+                                (static_cast<std::uint32_t>(2 * k + (inc_side > T(0) ? 1 : 0)) << 3);
+    if (np > 4) {
+        std::array<contact_point<T>, 8> cand;
+        for (std::size_t e = 0; e < np; ++e) {
+            const face_point<T>& x = buffer[in][pick[e]];
+            cand[e] = {{x.u, x.v, T(0)}, {x.u, x.v, x.s}, x.s, 0};
+        }
+        const four_of kept = best_four(std::span<const contact_point<T>>(cand.data(), np), vec3<T>{T(0), T(0), T(1)});
+        const std::array<std::uint8_t, 8> all = pick;
+        for (std::size_t e = 0; e < kept.count; ++e) pick[e] = all[kept.index[e]];
+        np = kept.count;
+    }
+    const vec3<T> face_centre = linear3::add_scaled(pr.t, side * R.half[i], a0);
     manifold<T> out(n);
-    for (std::size_t e = 0; e < local.count; ++e) {
-        const vec3<T> on_b = to_world(pr, local.points[e].point_b);  // its foot on the face: sep · n below
-        out.add({linear3::add_scaled(on_b, -local.points[e].separation, n), on_b, local.points[e].separation, local.points[e].id});
+    for (std::size_t e = 0; e < np; ++e) {
+        const face_point<T>& x = buffer[in][pick[e]];
+        const vec3<T> foot = linear3::add_scaled(linear3::add_scaled(face_centre, x.u, a1), x.v, a2);
+        const vec3<T> on_incident = linear3::add_scaled(foot, x.s, out_of_face);
+        const std::uint32_t id = faces | (x.feature << 6);
+        out.add(reference_is_a ? contact_point<T>{foot, on_incident, x.s, id} : contact_point<T>{on_incident, foot, x.s, id});
     }
     return out;
 }
@@ -233,8 +271,8 @@ template <class T>
 template <class T>
 [[nodiscard]] constexpr manifold<T> overlap_manifold(const box<T>& a, const motor_map<T>& pa, const box<T>& b,
                                                      const motor_map<T>& pb, const axis_choice<T>& ax, const T& margin) noexcept {
-    if (ax.kind == 0) return clip_faces(a, pa, ax.i, ax.normal, b, pb, margin);
-    if (ax.kind == 1) return reversed(clip_faces(b, pb, ax.j, linear3::scale(T(-1), ax.normal), a, pa, margin));
+    if (ax.kind == 0) return clip_faces(a, pa, ax.i, ax.normal, b, pb, ax.normal, true, margin);
+    if (ax.kind == 1) return clip_faces(b, pb, ax.j, linear3::scale(T(-1), ax.normal), a, pa, ax.normal, false, margin);
     return edge_point(a, pa, ax.i, b, pb, ax.j, ax.normal, margin);
 }
 }  // namespace box_detail
@@ -280,6 +318,16 @@ template <class T>
     const box_detail::axis_choice<T> ax = box_detail::least_overlap(a, pa, b, pb, -margin);
     // apart by more than the margin along an axis: no contact (a lower bound of the distance)
     if (-ax.depth > margin) return manifold<T>(ax.normal);
+    // apart along an edge axis, within the margin: the axis gives a lower bound of the distance,
+    // and the supporting edges' closest points need not lie along it; the point is the closest
+    // points (GJK), its id the edges'
+    if (ax.kind == 2 && ax.depth < T(0)) {
+        const separation<T> d = separation_between(a, pa, b, pb);
+        const manifold<T> edges = box_detail::edge_point(a, pa, ax.i, b, pb, ax.j, ax.normal, std::numeric_limits<T>::infinity());
+        manifold<T> out(d.normal);
+        if (d.distance <= margin) out.add({d.point_a, d.point_b, d.distance, edges.points[0].id});
+        return out;
+    }
     return box_detail::overlap_manifold(a, pa, b, pb, ax, margin);
 }
 

@@ -50,14 +50,16 @@ struct manifold {
 // Up to four of the candidate points (all of them when four or fewer): the deepest, the farthest
 // from it, then the two on either side of their line that span the largest triangles with it
 // (Box2D's reduction: the four that keep the most of the contact area); the four are extreme
-// points of the candidates, so that reducing a growing set in stages keeps its corners.
+// points of the candidates, so that reducing a growing set in stages keeps its corners. The
+// candidates' indices (four_of), the normal the candidates' (for the sides of the line).
+struct four_of {
+    std::array<std::uint8_t, 4> index;
+    std::size_t count;
+};
 template <class T>
-constexpr void add_best_four(manifold<T>& out, std::span<const contact_point<T>> cand) noexcept {
+[[nodiscard]] constexpr four_of best_four(std::span<const contact_point<T>> cand, const vec3<T>& normal) noexcept {
     const std::size_t nc = cand.size();
-    if (nc <= 4) {
-        for (const contact_point<T>& c : cand) out.add(c);
-        return;
-    }
+    if (nc <= 4) return {{0, 1, 2, 3}, nc};
     // the deepest; among points as deep to rounding (a face flat on a face), the one farthest from
     // their centre, so that a resting face keeps its corners
     std::size_t p1 = 0;
@@ -78,24 +80,28 @@ constexpr void add_best_four(manifold<T>& out, std::span<const contact_point<T>>
         const vec3<T> de = linear3::sub(cand[e].point_b, centre), d1 = linear3::sub(cand[p1].point_b, centre);
         if ((cand[e].separation) <= deepest + tie && linear3::dot(de, de) > linear3::dot(d1, d1)) p1 = e;
     }
-    out.add(cand[p1]);
     std::size_t p2 = nc;
     T far = T(-1);
     for (std::size_t e = 0; e < nc; ++e) {
         const vec3<T> d = linear3::sub(cand[e].point_b, cand[p1].point_b);
         if (e != p1 && linear3::dot(d, d) > far) far = linear3::dot(d, d), p2 = e;
     }
-    out.add(cand[p2]);
     const vec3<T> base = linear3::sub(cand[p2].point_b, cand[p1].point_b);
-    const auto area = [&](std::size_t e) { return linear3::dot(out.normal, linear3::cross(base, linear3::sub(cand[e].point_b, cand[p1].point_b))); };
+    const auto area = [&](std::size_t e) { return linear3::dot(normal, linear3::cross(base, linear3::sub(cand[e].point_b, cand[p1].point_b))); };
     std::size_t p3 = nc, p4 = nc;
     for (std::size_t e = 0; e < nc; ++e) {
         if (e == p1 || e == p2) continue;
         if (p3 == nc || area(e) > area(p3)) p3 = e;
         if (p4 == nc || area(e) < area(p4)) p4 = e;
     }
-    out.add(cand[p3]);
-    if (p4 != p3) out.add(cand[p4]);
+    const auto at = [](std::size_t e) { return static_cast<std::uint8_t>(e); };
+    return {{at(p1), at(p2), at(p3), at(p4)}, p4 != p3 ? std::size_t(4) : std::size_t(3)};
+}
+// The same, added to a manifold (its normal the candidates').
+template <class T>
+constexpr void add_best_four(manifold<T>& out, std::span<const contact_point<T>> cand) noexcept {
+    const four_of f = best_four(cand, out.normal);
+    for (std::size_t e = 0; e < f.count; ++e) out.add(cand[f.index[e]]);
 }
 
 // The same manifold seen from B: the normal reversed, each point's witnesses swapped.

@@ -49,7 +49,8 @@ enum class error_code : unsigned char {
     degenerate_triangle,    // a mesh triangle of zero area (two vertices equal, or on a line)
     capacity_exceeded,      // more items than the capacity given at construction (a broadphase's proxies)
     bad_index,              // a mesh triangle's vertex index past the vertices
-    size_mismatch,          // a mesh without triangles; a height field whose heights are not rows × columns
+    size_mismatch,          // a mesh without triangles; a height field whose heights are not rows × columns; a contact problem's arrays
+    negative_friction,      // a friction coefficient μ < 0 (constraints/)
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
@@ -95,7 +96,9 @@ enum class error_code : unsigned char {
             return "ctga: more items than the capacity given at construction (a broadphase's proxies, a mesh's triangles)";
         case error_code::bad_index: return "ctga: a mesh triangle names a vertex index past the mesh's vertices";
         case error_code::size_mismatch:
-            return "ctga: a mesh has no triangles, or a height field's heights do not number rows x columns (at least 2 x 2)";
+            return "ctga: a mesh has no triangles, a height field's heights do not number rows x columns (at least 2 x 2), or "
+                   "a contact problem's arrays disagree with its contact count (mu: m, impulses: 3m)";
+        case error_code::negative_friction: return "ctga: a friction coefficient must not be negative";
         case error_code::zero_direction: return "ctga: an axis must have a direction (it is the zero vector)";
         case error_code::not_a_motor: return "ctga: not a rigid motion (g g* = 1 fails beyond rounding, or the rotor part is zero)";
         case error_code::did_not_converge:

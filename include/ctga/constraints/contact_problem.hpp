@@ -1,0 +1,211 @@
+// The frictional contact problem of one step, and its solver.
+//
+// m contacts, each in its frame (n, t1, t2). The impulses r = (r_1 … r_m), r_i ∈ R³, and the
+// velocities after the step
+//     u = W r + q,
+// W = J M⁻¹ Jᵀ the Delassus operator (J's rows: each contact's normal and tangent lines, co-screws,
+// paired with the bodies' screws; M⁻¹ the bodies' mobility) and q the contact velocities the step
+// gives without contact (Acary, Brémond and Huber 2018; Siconos' and FCLIB's "fc3d"). Find r with,
+// for every contact,
+//     K_μi ∋ r_i ⊥ ũ_i ∈ K*_μi          (friction_cone.hpp: ũ = u + μ ‖u_t‖ e_n)
+// that is, each contact takes off (r_i = 0, u_n ≥ 0), sticks (u_i = 0, r_i ∈ K_μi) or slides
+// (r_i on the cone's boundary, u_n = 0, r_t = −μ r_n u_t / ‖u_t‖).
+//
+// The solver is nonsmooth Gauss–Seidel (Jean and Moreau's NSGS): a sweep solves each contact's own
+// problem exactly with the others' impulses held (one_contact); sweeps go on until the natural-map
+// residual ‖F(r)‖₂ (F_i = r_i − P_K(r_i − ũ_i)) is at most the tolerance the caller picks, or the
+// sweep budget is spent. The report says which: the residual reached, the sweeps, converged.
+// r is the caller's storage, its contents the warm start (zeros, or the previous step's impulses by
+// contact id); no allocation.
+#pragma once
+
+#include <array>
+#include <concepts>
+#include <cstddef>
+#include <numbers>
+#include <span>
+
+#include "ctga/constraints/friction_cone.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/math.hpp"
+
+namespace ctga::constraints {
+
+// What the solver needs of W and q: the contact count, W's diagonal block W_ii (symmetric positive
+// definite), contact i's velocity (W r + q)_i at the impulses r, and `apply(i, dr)` after r_i
+// changed by dr (an operator that keeps the bodies' velocities updates them; a dense one has
+// nothing to do).
+template <class D, class T>
+concept delassus_operator = requires(const D& c, D& d, std::size_t i, std::span<const T> r, const vec3<T>& dr) {
+    { c.contacts() } -> std::convertible_to<std::size_t>;
+    { c.block(i) } -> std::convertible_to<mat3<T>>;
+    { c.velocity(i, r) } -> std::convertible_to<vec3<T>>;
+    d.apply(i, dr);
+};
+
+// W (3m × 3m, row-major) and q (3m) given densely: a problem as Siconos and FCLIB store it.
+template <class T>
+struct dense_delassus {
+    std::span<const T> W, q;
+
+    [[nodiscard]] constexpr std::size_t contacts() const noexcept { return q.size() / 3; }
+    [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept {
+        const std::size_t n = q.size();
+        mat3<T> out{};
+        for (std::size_t a = 0; a < 3; ++a)
+            for (std::size_t b = 0; b < 3; ++b) out[a][b] = W[(3 * i + a) * n + 3 * i + b];
+        return out;
+    }
+    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> r) const noexcept {
+        const std::size_t n = q.size();
+        vec3<T> u{q[3 * i], q[3 * i + 1], q[3 * i + 2]};
+        for (std::size_t a = 0; a < 3; ++a)
+            for (std::size_t k = 0; k < n; ++k) u[a] += W[(3 * i + a) * n + k] * r[k];
+        return u;
+    }
+    constexpr void apply(std::size_t, const vec3<T>&) noexcept {}
+};
+
+template <class T>
+struct contact_settings {
+    T tolerance = T(1e-10);        // on ‖F(r)‖₂, in the impulses' units
+    std::size_t max_sweeps = 1000;
+};
+
+template <class T>
+struct contact_report {
+    error_code error = error_code::none;
+    T residual = T(0);  // ‖F(r)‖₂ at the impulses returned
+    std::size_t sweeps = 0;
+    bool converged = false;
+};
+
+namespace contact_detail {
+template <class T>
+[[nodiscard]] constexpr T absolute(const T& x) noexcept {
+    return x < T(0) ? -x : x;
+}
+// For the slip direction d = (cos θ, sin θ): r = r_n (1, −μ d) with u_n = 0, that is r_n = −b_n /
+// (A g)_n, g = (1, −μ d); and w = (A g)_n u_t = (A g)_n b_t − b_n (A g)_t, which points as u_t
+// where (A g)_n > 0 but has no pole where (A g)_n = 0 (r_n unbounded): its cross and dot products
+// with d are smooth in θ.
+template <class T>
+struct slide_at {
+    vec3<T> r;
+    T cross, along;  // w × d, w · d
+    bool valid;      // (A g)_n > 0: r_n > 0 (b_n < 0)
+};
+template <class T>
+[[nodiscard]] constexpr slide_at<T> slide(const mat3<T>& A, const vec3<T>& b, const T& mu, const T& theta) noexcept {
+    const math::cos_sin_pair<T> d = math::cos_sin(theta);
+    const vec3<T> g{T(1), -mu * d.cos, -mu * d.sin};
+    const vec3<T> Ag = linear3::apply(A, g);
+    const T w1 = Ag[0] * b[1] - b[0] * Ag[1], w2 = Ag[0] * b[2] - b[0] * Ag[2];
+    const bool valid = Ag[0] > T(0);
+    return {linear3::scale(valid ? -b[0] / Ag[0] : T(0), g), w1 * d.sin - w2 * d.cos, w1 * d.cos + w2 * d.sin, valid};
+}
+}  // namespace contact_detail
+
+// One contact's problem with the others' impulses held: u = A r + b (A = W_ii, symmetric positive
+// definite; b the velocity at r = 0), solved exactly:
+//   take-off when b_n ≥ 0: r = 0 (then ũ_n = b_n + μ ‖b_t‖ ≥ μ ‖b_t‖, in K*);
+//   stick when r = −A⁻¹ b lies in K_μ (u = 0);
+//   else it slides: r = r_n (1, −μ d), d the unit slip direction; u_n = 0 fixes r_n for each d,
+//   and d = (cos θ, sin θ) must make u_t a positive multiple of d: θ is a root of w × d (below),
+//   a trigonometric polynomial of degree 2 (at most four roots), found as the sampling below says.
+// μ = 0 slides along n only: r = (−b_n / A_nn, 0, 0).
+template <class T>
+[[nodiscard]] constexpr vec3<T> one_contact(const mat3<T>& A, const vec3<T>& b, const T& mu) noexcept {
+    if (b[0] >= T(0)) return {T(0), T(0), T(0)};
+    if (mu == T(0)) return {-b[0] / A[0][0], T(0), T(0)};
+    const vec3<T> stick = linear3::scale(T(-1), linear3::apply(linear3::inverse_symmetric(A), b));
+    if (tangential_norm(stick) <= mu * stick[0]) return stick;
+    // h(θ) = w × d sampled at 64 angles; a root is bisected where h changes sign, and |h| is
+    // minimised by golden section where it has a local minimum (a double root: h touches zero,
+    // where sliding meets sticking). Each candidate is scored by the natural map, the least kept.
+    constexpr std::size_t samples = 64;
+    const T step = T(2) * std::numbers::pi_v<T> / T(samples);
+    std::array<T, samples + 2> h{};
+    for (std::size_t k = 0; k < samples + 2; ++k) h[k] = contact_detail::slide(A, b, mu, step * T(k)).cross;
+    vec3<T> best{T(0), T(0), T(0)};
+    T best_residual = T(-1);
+    const auto consider = [&](const T& theta) {
+        const contact_detail::slide_at<T> at = contact_detail::slide(A, b, mu, theta);
+        const vec3<T> F = natural_map(at.r, linear3::add(linear3::apply(A, at.r), b), mu);
+        const T res = linear3::dot(F, F);
+        if (at.valid && (best_residual < T(0) || res < best_residual)) best = at.r, best_residual = res;
+    };
+    const auto size = [&](const T& theta) { return contact_detail::absolute(contact_detail::slide(A, b, mu, theta).cross); };
+    for (std::size_t k = 1; k <= samples; ++k) {
+        if ((h[k - 1] <= T(0)) != (h[k] <= T(0))) {
+            T lo = step * T(k - 1), hi = step * T(k);
+            const bool rising = h[k - 1] <= T(0);
+            for (int it = 0; it < 200; ++it) {
+                const T mid = (lo + hi) / T(2);
+                if (mid <= lo || mid >= hi) break;
+                ((contact_detail::slide(A, b, mu, mid).cross <= T(0)) == rising ? lo : hi) = mid;
+            }
+            consider((lo + hi) / T(2));
+        }
+        if (contact_detail::absolute(h[k]) <= contact_detail::absolute(h[k - 1]) && contact_detail::absolute(h[k]) <= contact_detail::absolute(h[k + 1])) {
+            constexpr T golden = T(0.6180339887498948482);
+            T lo = step * T(k - 1), hi = step * T(k + 1);
+            T x1 = hi - golden * (hi - lo), x2 = lo + golden * (hi - lo), f1 = size(x1), f2 = size(x2);
+            for (int it = 0; it < 100 && hi - lo > T(0); ++it) {
+                if (f1 <= f2) hi = x2, x2 = x1, f2 = f1, x1 = hi - golden * (hi - lo), f1 = size(x1);
+                else lo = x1, x1 = x2, f1 = f2, x2 = lo + golden * (hi - lo), f2 = size(x2);
+            }
+            consider((lo + hi) / T(2));
+        }
+    }
+    return best;
+}
+
+// Sweeps of nonsmooth Gauss–Seidel from the impulses in r (the warm start) until ‖F(r)‖₂ ≤ the
+// tolerance. Refused before any sweep: a non-finite μ, W block, velocity or impulse (non_finite),
+// μ < 0 (negative_friction), a block whose normal entry is not positive (not_positive_definite),
+// r of the wrong size (size_mismatch); r is then left as given.
+template <class T, class D>
+    requires delassus_operator<D, T>
+constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::span<T> r, const contact_settings<T>& settings = {}) noexcept {
+    const std::size_t m = W.contacts();
+    contact_report<T> report;
+    if (mu.size() != m || r.size() != 3 * m) return report.error = error_code::size_mismatch, report;
+    for (std::size_t i = 0; i < m; ++i) {
+        const mat3<T> A = W.block(i);
+        const vec3<T> u = W.velocity(i, std::span<const T>(r));
+        if (!all_finite(mu[i], A[0][0], A[0][1], A[0][2], A[1][1], A[1][2], A[2][2], u[0], u[1], u[2], r[3 * i], r[3 * i + 1],
+                              r[3 * i + 2]))
+            return report.error = error_code::non_finite, report;
+        if (mu[i] < T(0)) return report.error = error_code::negative_friction, report;
+        if (!(A[0][0] > T(0))) return report.error = error_code::not_positive_definite, report;
+    }
+    const auto residual = [&] {
+        T sum = T(0);
+        for (std::size_t i = 0; i < m; ++i) {
+            const vec3<T> ri{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
+            const vec3<T> F = natural_map(ri, W.velocity(i, std::span<const T>(r)), mu[i]);
+            sum += linear3::dot(F, F);
+        }
+        return math::sqrt(sum);
+    };
+    report.residual = residual();
+    while (report.residual > settings.tolerance && report.sweeps < settings.max_sweeps) {
+        for (std::size_t i = 0; i < m; ++i) {
+            const mat3<T> A = W.block(i);
+            const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
+            const vec3<T> b = linear3::sub(W.velocity(i, std::span<const T>(r)), linear3::apply(A, old));
+            const vec3<T> next = one_contact(A, b, mu[i]);
+            for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = next[a];
+            W.apply(i, linear3::sub(next, old));
+        }
+        ++report.sweeps;
+        report.residual = residual();
+    }
+    report.converged = report.residual <= settings.tolerance;
+    if (!is_finite(report.residual)) report.error = error_code::non_finite;
+    return report;
+}
+
+}  // namespace ctga::constraints

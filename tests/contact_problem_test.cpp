@@ -1,0 +1,155 @@
+// The frictional contact problem (include/ctga/constraints/): the cone's projection against
+// Moreau's decomposition, one contact against closed forms, and whole problems against the
+// independent long-double solver of tests/support/fc3d_reference.hpp (written without reading
+// the library's solver).
+#include <array>
+#include <cmath>
+#include <random>
+#include <string_view>
+#include <vector>
+
+#include <ctga/constraints/contact_problem.hpp>
+
+#include "support/catch.hpp"
+#include "support/fc3d_reference.hpp"
+
+namespace {
+namespace cn = ctga::constraints;
+using ctga::vec3;
+using ctga::mat3;
+
+template <class T>
+vec3<T> random_vec(std::mt19937_64& rng, T spread) {
+    std::uniform_real_distribution<T> u(-spread, spread);
+    const T a = u(rng), b = u(rng), c = u(rng);
+    return {a, b, c};
+}
+
+// A random problem: W = J Jᵀ + εI (J 3m × (3m + 3)), q random, μ in [0, 1].
+struct problem {
+    std::size_t m;
+    std::vector<double> W, q, mu;
+};
+problem random_problem(std::mt19937_64& rng, std::size_t m) {
+    const std::size_t n = 3 * m, k = n + 3;
+    std::normal_distribution<double> g;
+    std::uniform_real_distribution<double> fr(0.0, 1.0);
+    std::vector<double> J(n * k);
+    for (double& x : J) x = g(rng);
+    problem p{m, std::vector<double>(n * n), std::vector<double>(n), std::vector<double>(m)};
+    for (std::size_t a = 0; a < n; ++a)
+        for (std::size_t b = 0; b < n; ++b) {
+            double s = a == b ? 0.1 : 0.0;
+            for (std::size_t c = 0; c < k; ++c) s += J[a * k + c] * J[b * k + c];
+            p.W[a * n + b] = s;
+        }
+    for (double& x : p.q) x = 2 * g(rng);
+    for (double& x : p.mu) x = fr(rng);
+    return p;
+}
+
+template <class T>
+std::vector<long double> widen(const std::vector<T>& x) {
+    return {x.begin(), x.end()};
+}
+
+}  // namespace
+
+TEST_CASE("constraints: the projection on the friction cone splits x into a cone part and a polar part (Moreau)") {
+    // x = P_K(x) + P_K°(x), P_K(x) ∈ K, x − P_K(x) in the polar cone −K*, the two orthogonal
+    std::mt19937_64 rng(5);
+    std::uniform_real_distribution<double> fr(0.0, 2.0);
+    for (int it = 0; it < 2000; ++it) {
+        const vec3<double> x = random_vec(rng, 1.0);
+        const double mu = it % 10 == 0 ? 0.0 : fr(rng);
+        const vec3<double> p = cn::project_on_cone(x, mu);
+        const vec3<double> rest = ctga::linear3::sub(x, p);
+        CHECK(cn::tangential_norm(p) <= mu * p[0] + 1e-15);                      // in K
+        CHECK(mu * cn::tangential_norm(rest) <= -rest[0] + 1e-15);               // −rest in K*
+        CHECK(std::abs(ctga::linear3::dot(p, rest)) <= 1e-15);                   // orthogonal
+        const vec3<double> again = cn::project_on_cone(p, mu);                   // a projection
+        for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(again[k] - p[k]) <= 1e-15);
+    }
+}
+
+TEST_CASE("constraints: one contact takes off, sticks or slides as the closed forms say") {
+    const mat3<double> I{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    // stick: r = −b inside the cone
+    const vec3<double> stick = cn::one_contact(I, vec3<double>{-1, 0.3, 0}, 0.5);
+    CHECK(std::abs(stick[0] - 1) <= 1e-15);
+    CHECK(std::abs(stick[1] + 0.3) <= 1e-15);
+    // slide: u_n = 0, r on the cone's edge against the slip: r = (1, −0.5, 0), u = (0, 1.5, 0)
+    const vec3<double> slide = cn::one_contact(I, vec3<double>{-1, 2, 0}, 0.5);
+    CHECK(std::abs(slide[0] - 1) <= 1e-14);
+    CHECK(std::abs(slide[1] + 0.5) <= 1e-14);
+    CHECK(std::abs(slide[2]) <= 1e-14);
+    // take-off
+    const vec3<double> off = cn::one_contact(I, vec3<double>{1, 1, 1}, 0.5);
+    CHECK((off[0] == 0 && off[1] == 0 && off[2] == 0));
+    // frictionless: the normal impulse alone
+    const vec3<double> smooth = cn::one_contact(I, vec3<double>{-2, 5, 1}, 0.0);
+    CHECK((smooth[0] == 2 && smooth[1] == 0 && smooth[2] == 0));
+    // in a constant expression
+    static_assert(cn::one_contact(mat3<double>{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, vec3<double>{-1, 0.3, 0}, 0.5)[0] == 1.0);
+    // anisotropic blocks: the natural map vanishes to rounding, in every regime
+    std::mt19937_64 rng(7);
+    std::uniform_real_distribution<double> fr(0.0, 1.0);
+    int regimes[3] = {0, 0, 0};
+    for (int it = 0; it < 3000; ++it) {
+        const problem p = random_problem(rng, 1);
+        const mat3<double> A{{{p.W[0], p.W[1], p.W[2]}, {p.W[3], p.W[4], p.W[5]}, {p.W[6], p.W[7], p.W[8]}}};
+        const vec3<double> b{p.q[0], p.q[1], p.q[2]};
+        const vec3<double> r = cn::one_contact(A, b, p.mu[0]);
+        const vec3<double> u = ctga::linear3::add(ctga::linear3::apply(A, r), b);
+        const vec3<double> F = cn::natural_map(r, u, p.mu[0]);
+        CHECK(std::sqrt(ctga::linear3::dot(F, F)) <= 1e-12 * (1 + std::sqrt(ctga::linear3::dot(b, b))));
+        ++regimes[r[0] == 0 ? 0 : std::sqrt(ctga::linear3::dot(u, u)) <= 1e-9 ? 1 : 2];
+    }
+    CHECK(regimes[0] > 100);  // take-off
+    CHECK(regimes[1] > 100);  // stick
+    CHECK(regimes[2] > 100);  // slide
+}
+
+TEST_CASE("constraints: nonsmooth Gauss-Seidel reaches the tolerance and the reference solver's impulses") {
+    std::mt19937_64 rng(11);
+    double worst_gap = 0;
+    for (int it = 0; it < 60; ++it) {
+        const std::size_t m = 1 + static_cast<std::size_t>(it % 8);
+        problem p = random_problem(rng, m);
+        for (double& mu : p.mu) mu *= 0.6;  // unique solutions in practice
+        std::vector<double> r(3 * m, 0.0);
+        cn::dense_delassus<double> W{p.W, p.q};
+        const cn::contact_report<double> rep = cn::solve_contacts(W, std::span<const double>(p.mu), std::span<double>(r), {1e-12, 20000});
+        REQUIRE(rep.error == ctga::error_code::none);
+        CHECK(rep.converged);
+        CHECK(rep.residual <= 1e-12);
+        // the residual it reports is the natural map's, computed independently
+        CHECK(static_cast<double>(fc3d_reference::natural_map_residual(widen(p.W), widen(p.q), widen(p.mu), widen(r))) <= 1.5e-12);
+        const fc3d_reference::result ref = fc3d_reference::solve(widen(p.W), widen(p.q), widen(p.mu));
+        REQUIRE(ref.converged);
+        for (std::size_t k = 0; k < 3 * m; ++k) worst_gap = std::max(worst_gap, std::abs(r[k] - static_cast<double>(ref.r[k])));
+    }
+    CHECK(worst_gap <= 1e-8);
+}
+
+TEST_CASE("constraints: float, and bad input refused before any sweep") {
+    const std::vector<float> W{2, 0, 0, 0, 2, 0, 0, 0, 2}, q{-1, 0.5f, 0}, mu{0.6f};
+    std::vector<float> r(3, 0.0f);
+    cn::dense_delassus<float> D{W, q};
+    const auto rep = cn::solve_contacts(D, std::span<const float>(mu), std::span<float>(r), {1e-6f, 100});
+    CHECK(rep.converged);
+    CHECK(std::abs(r[0] - 0.5f) <= 1e-6f);  // sticks: r = −W⁻¹ q = (0.5, −0.25, 0), |r_t| ≤ 0.6 r_n
+    CHECK(std::abs(r[1] + 0.25f) <= 1e-6f);
+
+    std::vector<double> Wd{1, 0, 0, 0, 1, 0, 0, 0, 1}, qd{-1, 0, 0}, rd(3, 0.0);
+    const std::vector<double> negative{-0.1}, fine{0.3};
+    cn::dense_delassus<double> Dd{Wd, qd};
+    CHECK(cn::solve_contacts(Dd, std::span<const double>(negative), std::span<double>(rd)).error == ctga::error_code::negative_friction);
+    CHECK(std::string_view(ctga::describe(ctga::error_code::negative_friction)).find("friction") != std::string_view::npos);
+    std::vector<double> short_r(2, 0.0);
+    CHECK(cn::solve_contacts(Dd, std::span<const double>(fine), std::span<double>(short_r)).error == ctga::error_code::size_mismatch);
+    qd[1] = std::nan("");
+    cn::dense_delassus<double> Dn{Wd, qd};
+    CHECK(cn::solve_contacts(Dn, std::span<const double>(fine), std::span<double>(rd)).error == ctga::error_code::non_finite);
+    CHECK((rd[0] == 0 && rd[1] == 0 && rd[2] == 0));  // left as given
+}

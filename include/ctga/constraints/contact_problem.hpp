@@ -67,10 +67,16 @@ struct dense_delassus {
     constexpr void apply(std::size_t, const vec3<T>&) noexcept {}
 };
 
+// How a sweep treats one contact: `exact` solves its own problem (one_contact); `projected` takes
+// one projected step, the normal impulse then the tangential one (below): cheaper, and with the
+// same fixed points, so the same solutions when the sweeps converge.
+enum class local_solve : unsigned char { exact, projected };
+
 template <class T>
 struct contact_settings {
     T tolerance = T(1e-10);        // on ‖F(r)‖₂, in the impulses' units
     std::size_t max_sweeps = 1000;
+    local_solve local = local_solve::exact;
 };
 
 template <class T>
@@ -78,6 +84,7 @@ struct contact_report {
     error_code error = error_code::none;
     T residual = T(0);  // ‖F(r)‖₂ at the impulses returned
     std::size_t sweeps = 0;
+    std::size_t polish_steps = 0;  // Newton steps after the sweeps (newton_polish.hpp)
     bool converged = false;
 };
 
@@ -162,6 +169,27 @@ template <class T>
     return best;
 }
 
+// One projected step for a contact with u = A r + b, from its impulse r: the normal impulse
+// r_n ← max(0, r_n − u_n / A_nn), then, with u updated, the tangential one
+// r_t ← P(r_t − u_t / ρ) on the disc ‖r_t‖ ≤ μ r_n, ρ = (A_t1t1 + A_t2t2) / 2. Its fixed points
+// are Coulomb's law: 0 ≤ r_n ⊥ u_n ≥ 0, and r_t inside the disc with u_t = 0 or on its rim
+// opposite to u_t (maximal dissipation), that is K_μ ∋ r ⊥ ũ ∈ K*_μ.
+template <class T>
+[[nodiscard]] constexpr vec3<T> projected_contact(const mat3<T>& A, const vec3<T>& b, const T& mu, const vec3<T>& r) noexcept {
+    const vec3<T> u = linear3::add(linear3::apply(A, r), b);
+    T rn = r[0] - u[0] / A[0][0];
+    rn = rn > T(0) ? rn : T(0);
+    const T dn = rn - r[0];
+    const T rho = (A[1][1] + A[2][2]) / T(2);
+    T t1 = r[1] - (u[1] + A[1][0] * dn) / rho, t2 = r[2] - (u[2] + A[2][0] * dn) / rho;
+    const T length = math::sqrt(t1 * t1 + t2 * t2), limit = mu * rn;
+    if (length > limit) {
+        const T s = length > T(0) ? limit / length : T(0);
+        t1 *= s, t2 *= s;
+    }
+    return {rn, t1, t2};
+}
+
 // Sweeps of nonsmooth Gauss–Seidel from the impulses in r (the warm start) until ‖F(r)‖₂ ≤ the
 // tolerance. Refused before any sweep: a non-finite μ, W block, velocity or impulse (non_finite),
 // μ < 0 (negative_friction), a block whose normal entry is not positive (not_positive_definite),
@@ -196,7 +224,8 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
             const mat3<T> A = W.block(i);
             const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
             const vec3<T> b = linear3::sub(W.velocity(i, std::span<const T>(r)), linear3::apply(A, old));
-            const vec3<T> next = one_contact(A, b, mu[i]);
+            const vec3<T> next =
+                settings.local == local_solve::exact ? one_contact(A, b, mu[i]) : projected_contact(A, b, mu[i], old);
             for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = next[a];
             W.apply(i, linear3::sub(next, old));
         }

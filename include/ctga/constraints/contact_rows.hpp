@@ -1,0 +1,149 @@
+// The rows of the contact problem in the paper's terms (§5): a contact's normal and friction
+// forces are lines, co-screws L = (x × e, e) for a direction e through the contact point x; a
+// row of the constraint Jacobian is the pairing L(s) = ω·(x × e) + v·e of a body's screw s with
+// such a line (the speed along e of the body's point at x); a body's response to an impulse r
+// along L is its mobility applied to the line, r N⁻¹ L.
+//
+// Every moving body's screw is taken in the frame at its centre of mass with the world's axes:
+// there N = diag(I_w, m 1) with I_w = R I_b Rᵀ, and the mobility is N⁻¹ (l, p) = (I_w⁻¹ l, p / m),
+// I_w⁻¹ = R I_b⁻¹ Rᵀ: the body-frame mobility moved by the body's rotation as N is (§7: the same
+// transformation for every symmetric 6 × 6 element). The body kinds' mobilities (body_kinds.hpp)
+// keep their structure: a sphere's I⁻¹ is one scalar and needs no rotation.
+//
+// A contact point between bodies A and B (normal n from A to B, tangents t1, t2) has three
+// directions e_k; B feels +r_k e_k, A feels −r_k e_k. Its velocity u_k = L_k^B(s_B) − L_k^A(s_A)
+// and its block of the Delassus operator W_jk = L_j^A(N_A⁻¹ L_k^A) + L_j^B(N_B⁻¹ L_k^B). A static
+// body has no screw and no response: its side of a row is absent (not a zero).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/linear3.hpp"
+#include "ctga/mechanics/screw.hpp"
+
+namespace ctga::constraints {
+
+inline constexpr std::uint32_t no_body = ~std::uint32_t{0};  // the static side of a row
+
+// A moving body's mobility in the frame at its centre of mass with the world's axes.
+template <class T>
+struct mobility {
+    T inverse_mass;
+    mat3<T> inverse_inertia;  // I_w⁻¹ = R I_b⁻¹ Rᵀ
+};
+
+// N⁻¹ L for a line L = (l, p): the screw (I_w⁻¹ l, p / m).
+template <class T>
+[[nodiscard]] constexpr screw<T> respond(const mobility<T>& M, const coscrew<T>& L) noexcept {
+    const vec3<T> w = linear3::apply(M.inverse_inertia, vec3<T>{L[0], L[1], L[2]});
+    return screw<T>{w[0], w[1], w[2], M.inverse_mass * L[3], M.inverse_mass * L[4], M.inverse_mass * L[5]};
+}
+
+// The evaluation map L(s) = l·ω + p·v (§5).
+template <class T>
+[[nodiscard]] constexpr T pair(const coscrew<T>& L, const screw<T>& s) noexcept {
+    return L[0] * s[0] + L[1] * s[1] + L[2] * s[2] + L[3] * s[3] + L[4] * s[4] + L[5] * s[5];
+}
+
+// A unit vector's two tangents, t1 × t2 = n (Duff et al. 2017: continuous in n but at n_z = −1,
+// so a resting contact keeps its tangents, and its friction impulses stay comparable, from one
+// step to the next).
+template <class T>
+[[nodiscard]] constexpr std::array<vec3<T>, 2> tangents(const vec3<T>& n) noexcept {
+    const T sign = n[2] >= T(0) ? T(1) : T(-1);
+    const T a = T(-1) / (sign + n[2]);
+    const T b = n[0] * n[1] * a;
+    return {vec3<T>{T(1) + sign * n[0] * n[0] * a, sign * b, -sign * n[0]}, vec3<T>{b, sign + n[1] * n[1] * a, -n[1]}};
+}
+
+// One side of a contact point: the body, its three lines (about its centre of mass) and its
+// responses to them.
+template <class T>
+struct row_side {
+    std::uint32_t body = no_body;
+    std::array<coscrew<T>, 3> line;
+    std::array<screw<T>, 3> response;
+};
+
+// A contact point's three rows: its frame's directions (n, t1, t2), the two sides, its Delassus
+// block, the velocity offset added to the normal row (speculative gap, restitution: the caller's
+// law) and the friction coefficient.
+template <class T>
+struct contact_row {
+    std::array<vec3<T>, 3> direction;
+    row_side<T> a, b;
+    mat3<T> block;
+    T bias;
+    T mu;
+};
+
+// The side of a body with centre of mass c and mobility M at the point x, for the directions e.
+template <class T>
+[[nodiscard]] constexpr row_side<T> make_side(std::uint32_t body, const vec3<T>& c, const mobility<T>& M, const vec3<T>& x,
+                                             const std::array<vec3<T>, 3>& e) noexcept {
+    row_side<T> out;
+    out.body = body;
+    const vec3<T> arm = linear3::sub(x, c);
+    for (std::size_t k = 0; k < 3; ++k) {
+        const vec3<T> moment = linear3::cross(arm, e[k]);
+        out.line[k] = coscrew<T>{moment[0], moment[1], moment[2], e[k][0], e[k][1], e[k][2]};
+        out.response[k] = respond(M, out.line[k]);
+    }
+    return out;
+}
+
+// The row's block W_jk = Σ_sides L_j(N⁻¹ L_k) (symmetric: pair(L_j, N⁻¹ L_k) = L_jᵀ N⁻¹ L_k).
+template <class T>
+[[nodiscard]] constexpr mat3<T> delassus_block(const row_side<T>& a, const row_side<T>& b) noexcept {
+    mat3<T> W{};
+    for (const row_side<T>* side : {&a, &b}) {
+        if (side->body == no_body) continue;
+        for (std::size_t j = 0; j < 3; ++j)
+            for (std::size_t k = j; k < 3; ++k) W[j][k] += pair(side->line[j], side->response[k]);
+    }
+    for (std::size_t j = 0; j < 3; ++j)
+        for (std::size_t k = 0; k < j; ++k) W[j][k] = W[k][j];
+    return W;
+}
+
+// The rows of a step as the solver's Delassus operator (contact_problem.hpp): the velocities are
+// the moving bodies' screws, kept current as impulses change (u = J s, s = s_free + N⁻¹ Jᵀ r),
+// so a contact's velocity costs its two sides' pairings, not a row of W.
+template <class T>
+struct rows_delassus {
+    std::span<const contact_row<T>> rows;
+    std::span<screw<T>> velocity_of_body;
+
+    [[nodiscard]] constexpr std::size_t contacts() const noexcept { return rows.size(); }
+    [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept { return rows[i].block; }
+    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T>) const noexcept {
+        const contact_row<T>& c = rows[i];
+        vec3<T> u{c.bias, T(0), T(0)};
+        if (c.b.body != no_body) {
+            const screw<T>& s = velocity_of_body[c.b.body];
+            for (std::size_t k = 0; k < 3; ++k) u[k] += pair(c.b.line[k], s);
+        }
+        if (c.a.body != no_body) {
+            const screw<T>& s = velocity_of_body[c.a.body];
+            for (std::size_t k = 0; k < 3; ++k) u[k] -= pair(c.a.line[k], s);
+        }
+        return u;
+    }
+    constexpr void apply(std::size_t i, const vec3<T>& dr) const noexcept {
+        const contact_row<T>& c = rows[i];
+        if (c.b.body != no_body) {
+            screw<T>& s = velocity_of_body[c.b.body];
+            s = screw<T>(s + dr[0] * c.b.response[0] + dr[1] * c.b.response[1] + dr[2] * c.b.response[2]);
+        }
+        if (c.a.body != no_body) {
+            screw<T>& s = velocity_of_body[c.a.body];
+            s = screw<T>(s - (dr[0] * c.a.response[0] + dr[1] * c.a.response[1] + dr[2] * c.a.response[2]));
+        }
+    }
+};
+
+}  // namespace ctga::constraints

@@ -60,13 +60,12 @@ template <class T>
     return {vec3<T>{T(1) + sign * n[0] * n[0] * a, sign * b, -sign * n[0]}, vec3<T>{b, sign + n[1] * n[1] * a, -n[1]}};
 }
 
-// One side of a contact point: the body, its three lines (about its centre of mass) and its
-// responses to them.
+// One side of a contact point: the body and the moments x × e_k of its three lines about its
+// centre of mass (the lines' force parts are the row's directions, shared by both sides).
 template <class T>
 struct row_side {
     std::uint32_t body = no_body;
-    std::array<coscrew<T>, 3> line;
-    std::array<screw<T>, 3> response;
+    std::array<vec3<T>, 3> moment;
 };
 
 // A contact point's three rows: its frame's directions (n, t1, t2), the two sides, its Delassus
@@ -81,29 +80,39 @@ struct contact_row {
     T mu;
 };
 
-// The side of a body with centre of mass c and mobility M at the point x, for the directions e.
+// Line k of a side: (x × e_k, e_k).
 template <class T>
-[[nodiscard]] constexpr row_side<T> make_side(std::uint32_t body, const vec3<T>& c, const mobility<T>& M, const vec3<T>& x,
-                                             const std::array<vec3<T>, 3>& e) noexcept {
+[[nodiscard]] constexpr coscrew<T> line(const contact_row<T>& row, const row_side<T>& side, std::size_t k) noexcept {
+    const vec3<T>& m = side.moment[k];
+    const vec3<T>& e = row.direction[k];
+    return coscrew<T>{m[0], m[1], m[2], e[0], e[1], e[2]};
+}
+
+// The side of a body with centre of mass c at the point x, for the directions e.
+template <class T>
+[[nodiscard]] constexpr row_side<T> make_side(std::uint32_t body, const vec3<T>& c, const vec3<T>& x, const std::array<vec3<T>, 3>& e) noexcept {
     row_side<T> out;
     out.body = body;
     const vec3<T> arm = linear3::sub(x, c);
-    for (std::size_t k = 0; k < 3; ++k) {
-        const vec3<T> moment = linear3::cross(arm, e[k]);
-        out.line[k] = coscrew<T>{moment[0], moment[1], moment[2], e[k][0], e[k][1], e[k][2]};
-        out.response[k] = respond(M, out.line[k]);
-    }
+    for (std::size_t k = 0; k < 3; ++k) out.moment[k] = linear3::cross(arm, e[k]);
     return out;
 }
 
-// The row's block W_jk = Σ_sides L_j(N⁻¹ L_k) (symmetric: pair(L_j, N⁻¹ L_k) = L_jᵀ N⁻¹ L_k).
+// L_j(N⁻¹ L_k) for lines j of row x's side sx and k of row y's side sy on the same body.
 template <class T>
-[[nodiscard]] constexpr mat3<T> delassus_block(const row_side<T>& a, const row_side<T>& b) noexcept {
+[[nodiscard]] constexpr T coupling(const mobility<T>& M, const contact_row<T>& x, const row_side<T>& sx, std::size_t j,
+                                   const contact_row<T>& y, const row_side<T>& sy, std::size_t k) noexcept {
+    return pair(line(x, sx, j), respond(M, line(y, sy, k)));
+}
+
+// The row's block W_jk = Σ_sides L_j(N⁻¹ L_k) (symmetric: L_jᵀ N⁻¹ L_k).
+template <class T>
+[[nodiscard]] constexpr mat3<T> delassus_block(const contact_row<T>& row, std::span<const mobility<T>> M) noexcept {
     mat3<T> W{};
-    for (const row_side<T>* side : {&a, &b}) {
+    for (const row_side<T>* side : {&row.a, &row.b}) {
         if (side->body == no_body) continue;
         for (std::size_t j = 0; j < 3; ++j)
-            for (std::size_t k = j; k < 3; ++k) W[j][k] += pair(side->line[j], side->response[k]);
+            for (std::size_t k = j; k < 3; ++k) W[j][k] += coupling(M[side->body], row, *side, j, row, *side, k);
     }
     for (std::size_t j = 0; j < 3; ++j)
         for (std::size_t k = 0; k < j; ++k) W[j][k] = W[k][j];
@@ -112,37 +121,41 @@ template <class T>
 
 // The rows of a step as the solver's Delassus operator (contact_problem.hpp): the velocities are
 // the moving bodies' screws, kept current as impulses change (u = J s, s = s_free + N⁻¹ Jᵀ r),
-// so a contact's velocity costs its two sides' pairings, not a row of W.
+// so a contact's velocity costs its sides' pairings and a change of impulse dr one mobility
+// applied per side, to the impulse's co-screw ±Σ dr_k L_k.
 template <class T>
 struct rows_delassus {
     std::span<const contact_row<T>> rows;
+    std::span<const mobility<T>> mobility_of_body;
     std::span<screw<T>> velocity_of_body;
 
     [[nodiscard]] constexpr std::size_t contacts() const noexcept { return rows.size(); }
     [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept { return rows[i].block; }
-    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T>) const noexcept {
+    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> = {}) const noexcept {
         const contact_row<T>& c = rows[i];
         vec3<T> u{c.bias, T(0), T(0)};
-        if (c.b.body != no_body) {
-            const screw<T>& s = velocity_of_body[c.b.body];
-            for (std::size_t k = 0; k < 3; ++k) u[k] += pair(c.b.line[k], s);
-        }
-        if (c.a.body != no_body) {
-            const screw<T>& s = velocity_of_body[c.a.body];
-            for (std::size_t k = 0; k < 3; ++k) u[k] -= pair(c.a.line[k], s);
-        }
+        const auto add = [&](const row_side<T>& side, const T& sign) {
+            if (side.body == no_body) return;
+            const screw<T>& s = velocity_of_body[side.body];
+            const vec3<T> w{s[0], s[1], s[2]}, v{s[3], s[4], s[5]};
+            for (std::size_t k = 0; k < 3; ++k) u[k] += sign * (linear3::dot(side.moment[k], w) + linear3::dot(c.direction[k], v));
+        };
+        add(c.b, T(1));
+        add(c.a, T(-1));
         return u;
     }
     constexpr void apply(std::size_t i, const vec3<T>& dr) const noexcept {
         const contact_row<T>& c = rows[i];
-        if (c.b.body != no_body) {
-            screw<T>& s = velocity_of_body[c.b.body];
-            s = screw<T>(s + dr[0] * c.b.response[0] + dr[1] * c.b.response[1] + dr[2] * c.b.response[2]);
-        }
-        if (c.a.body != no_body) {
-            screw<T>& s = velocity_of_body[c.a.body];
-            s = screw<T>(s - (dr[0] * c.a.response[0] + dr[1] * c.a.response[1] + dr[2] * c.a.response[2]));
-        }
+        const auto push = [&](const row_side<T>& side, const T& sign) {
+            if (side.body == no_body) return;
+            coscrew<T> P{};
+            for (std::size_t k = 0; k < 3; ++k)
+                for (std::size_t a = 0; a < 3; ++a) P[a] += sign * dr[k] * side.moment[k][a], P[3 + a] += sign * dr[k] * c.direction[k][a];
+            screw<T>& s = velocity_of_body[side.body];
+            s = screw<T>(s + respond(mobility_of_body[side.body], P));
+        };
+        push(c.b, T(1));
+        push(c.a, T(-1));
     }
 };
 

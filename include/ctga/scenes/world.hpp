@@ -90,6 +90,7 @@ struct world_settings {
     T restitution_threshold = T(0.05);   // slower impacts are inelastic (m/s)
     T slop = T(1e-4);                    // penetration left alone (m)
     T correction = T(0.2);               // fraction of the rest removed per step
+    std::size_t correction_sweeps = 10;  // at most, for the position correction
     constraints::contact_settings<T> solver{T(1e-8), 200, constraints::local_solve::projected};
     std::size_t polish_limit = 64;       // sweeps short of the tolerance are finished by Newton
                                          // (newton_polish.hpp) on problems of at most this many contacts
@@ -387,9 +388,9 @@ public:
                 const vec3<T> x = linear3::scale(T(0.5), linear3::add(cp.point_a, cp.point_b));
                 constraints::contact_row<T>& row = rows_[contacts_];
                 row.direction = dir;
-                row.a = constraints::make_side(fm.a, map_[fm.a].t, mobility_[fm.a], x, dir);
-                row.b = fixed ? constraints::row_side<T>{} : constraints::make_side(fm.b, map_[fm.b].t, mobility_[fm.b], x, dir);
-                row.block = constraints::delassus_block(row.a, row.b);
+                row.a = constraints::make_side(fm.a, map_[fm.a].t, x, dir);
+                row.b = fixed ? constraints::row_side<T>{} : constraints::make_side(fm.b, map_[fm.b].t, x, dir);
+                row.block = constraints::delassus_block<T>(row, mobility_);
                 row.mu = mu;
                 // u⁻ and u_free along n
                 const T before = normal_speed(row, before_), free = normal_speed(row, velocity_);
@@ -414,7 +415,7 @@ public:
     // give their corners' ids by rounding, which may change from step to step); a new contact
     // from zero.
     void warm_start() noexcept {
-        const constraints::rows_delassus<T> W{rows(), velocities()};
+        const constraints::rows_delassus<T> W{rows(), mobilities(), velocities()};
         const world_detail::stored_impulse<T>*first = stored_.data(), *end = first + stored_count_;
         const auto by_key = [](const world_detail::stored_impulse<T>& s, const world_detail::contact_key& k) { return s.key < k; };
         for (std::size_t c = 0; c < contacts_; ++c) {
@@ -445,7 +446,7 @@ public:
     // normal-only problem on pseudo-velocities for the gaps the step would end with,
     // φ⁺ = φ + h (u⁻ + u⁺)/2, asking u_p ≥ −β (φ⁺ + slop)/h where φ⁺ < −slop and u_p ≥ −(φ⁺ + slop)/h elsewhere.
     void solve(const T& h, step_report<T>& report) noexcept {
-        constraints::rows_delassus<T> W{rows(), velocities()};
+        constraints::rows_delassus<T> W{rows(), mobilities(), velocities()};
         const bool small = contacts_ <= settings_.polish_limit;
         if (small) polish(W, report.contact);
         if (!small || !report.contact.converged) {
@@ -465,9 +466,11 @@ public:
             mu_[c] = T(0);
         }
         if (!any) return;
-        constraints::rows_delassus<T> P{rows(), std::span<screw<T>>(pseudo_.data(), total_)};
+        constraints::rows_delassus<T> P{rows(), mobilities(), std::span<screw<T>>(pseudo_.data(), total_)};
+        constraints::contact_settings<T> correcting = settings_.solver;
+        correcting.max_sweeps = settings_.correction_sweeps;
         report.correction = constraints::solve_contacts<T>(P, std::span<const T>(mu_.data(), contacts_),
-                                                           std::span<T>(correction_.data(), 3 * contacts_), settings_.solver);
+                                                           std::span<T>(correction_.data(), 3 * contacts_), correcting);
     }
 
     // Newton on the problem held densely: W_ij = Σ over the bodies contacts i and j share of
@@ -479,7 +482,8 @@ public:
         const auto block = [&](const constraints::row_side<T>& x, const constraints::row_side<T>& y, T sign, std::size_t i, std::size_t j) {
             if (x.body == constraints::no_body || x.body != y.body) return;
             for (std::size_t a = 0; a < 3; ++a)
-                for (std::size_t b = 0; b < 3; ++b) D[(3 * i + a) * n + 3 * j + b] += sign * constraints::pair(x.line[a], y.response[b]);
+                for (std::size_t b = 0; b < 3; ++b)
+                    D[(3 * i + a) * n + 3 * j + b] += sign * constraints::coupling(mobility_[x.body], rows_[i], x, a, rows_[j], y, b);
         };
         for (T& x : D) x = T(0);
         for (std::size_t i = 0; i < contacts_; ++i)
@@ -585,8 +589,8 @@ private:
     }
     static T normal_speed(const constraints::contact_row<T>& row, const std::pmr::vector<screw<T>>& s) noexcept {
         T u = T(0);
-        if (row.b.body != constraints::no_body) u += constraints::pair(row.b.line[0], s[row.b.body]);
-        if (row.a.body != constraints::no_body) u -= constraints::pair(row.a.line[0], s[row.a.body]);
+        if (row.b.body != constraints::no_body) u += constraints::pair(constraints::line(row, row.b, 0), s[row.b.body]);
+        if (row.a.body != constraints::no_body) u -= constraints::pair(constraints::line(row, row.a, 0), s[row.a.body]);
         return u;
     }
     // Contact c's point in its body a's frame (at the step's start pose).
@@ -606,6 +610,7 @@ private:
     }
     std::span<const constraints::contact_row<T>> rows() const noexcept { return {rows_.data(), contacts_}; }
     std::span<screw<T>> velocities() noexcept { return {velocity_.data(), total_}; }
+    std::span<const constraints::mobility<T>> mobilities() const noexcept { return {mobility_.data(), total_}; }
 
     world_settings<T> settings_;
     std::tuple<group<Kinds>...> groups_;

@@ -111,7 +111,7 @@ TEST_CASE("constraints: one contact takes off, sticks or slides as the closed fo
     CHECK(regimes[2] > 100);  // slide
 }
 
-TEST_CASE("constraints: nonsmooth Gauss-Seidel (exact and projected local steps) and Newton reach the tolerance and the reference solver's impulses") {
+TEST_CASE("constraints: nonsmooth Gauss-Seidel (exact and projected local steps, conjugate directions) and Newton reach the tolerance and the reference solver's impulses") {
     std::mt19937_64 rng(11);
     double worst_gap = 0, worst_projected = 0, worst_newton = 0;
     std::size_t newton_steps = 0;
@@ -137,6 +137,13 @@ TEST_CASE("constraints: nonsmooth Gauss-Seidel (exact and projected local steps)
         CHECK(pr.converged);
         CHECK(static_cast<double>(fc3d_reference::natural_map_residual(widen(p.W), widen(p.q), widen(p.mu), widen(rp))) <= 1.5e-12);
         for (std::size_t k = 0; k < 3 * m; ++k) worst_projected = std::max(worst_projected, std::abs(rp[k] - static_cast<double>(ref.r[k])));
+        // and accelerated by conjugate directions
+        std::vector<double> rc(3 * m, 0.0), directions(6 * m);
+        const cn::contact_report<double> cr = cn::solve_contacts(W, std::span<const double>(p.mu), std::span<double>(rc),
+                                                                 {1e-12, 200000, cn::local_solve::projected}, std::span<double>(directions));
+        CHECK(cr.converged);
+        CHECK(static_cast<double>(fc3d_reference::natural_map_residual(widen(p.W), widen(p.q), widen(p.mu), widen(rc))) <= 1.5e-12);
+        for (std::size_t k = 0; k < 3 * m; ++k) worst_projected = std::max(worst_projected, std::abs(rc[k] - static_cast<double>(ref.r[k])));
         // Newton from zero
         std::vector<double> rn(3 * m, 0.0), scratch(cn::newton_scratch_size(m));
         const cn::contact_report<double> nr =

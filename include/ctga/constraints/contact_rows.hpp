@@ -77,6 +77,7 @@ struct contact_row {
     std::array<vec3<T>, 3> direction;
     row_side<T> a, b;
     mat3<T> block;
+    mat3<T> inverse;  // block⁻¹, kept for a bilateral block (its sweeps solve with it)
     vec3<T> bias;
     T mu;
     bool bilateral = false;
@@ -134,6 +135,7 @@ struct rows_delassus {
     [[nodiscard]] constexpr std::size_t contacts() const noexcept { return rows.size(); }
     [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept { return rows[i].block; }
     [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept { return rows[i].bilateral; }
+    [[nodiscard]] constexpr const mat3<T>& inverse_block(std::size_t i) const noexcept { return rows[i].inverse; }
     [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> = {}) const noexcept {
         const contact_row<T>& c = rows[i];
         vec3<T> u = c.bias;

@@ -448,6 +448,7 @@ public:
             row.a = constraints::make_side(J.a, map_[J.a].t, pa, row.direction);
             row.b = J.b == constraints::no_body ? constraints::row_side<T>{} : constraints::make_side(J.b, map_[J.b].t, pb, row.direction);
             row.block = constraints::delassus_block<T>(row, mobility_);
+            row.inverse = linear3::inverse_symmetric(row.block);
             row.bias = {}, row.mu = T(0), row.bilateral = true;
             joint_error_[j] = linear3::sub(pb, pa);
             joint_before_[j] = row_velocity(row, before_);

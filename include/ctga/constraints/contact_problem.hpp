@@ -27,11 +27,13 @@
 #include <cstddef>
 #include <numbers>
 #include <span>
+#include <cstdint>
 
 #include "ctga/constraints/friction_cone.hpp"
 #include "ctga/mechanics/linear3.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/team.hpp"
 
 namespace ctga::constraints {
 
@@ -209,6 +211,19 @@ template <class T>
 }
 
 
+// An order of the rows in parts, and the parts in phases: part p is order[part_start[p] ..
+// part_start[p + 1]), phase f the parts [phase_start[f], phase_start[f + 1]). The parts of a phase
+// share no moving body, so the team's threads sweep them at once, each part in its order; the
+// phases follow one another. With m numbers for the residual's terms.
+template <class T>
+struct sweep_schedule {
+    std::span<const std::uint32_t> order;
+    std::span<const std::uint32_t> part_start;
+    std::span<const std::uint32_t> phase_start;
+    team* crew = nullptr;
+    std::span<T> partial;
+};
+
 // Sweeps of nonsmooth Gauss–Seidel from the impulses in r (the warm start) until ‖F(r)‖₂ ≤ the
 // tolerance. Refused before any sweep: a non-finite μ, W block, velocity or impulse (non_finite),
 // μ < 0 (negative_friction), a block whose normal entry is not positive (not_positive_definite),
@@ -216,7 +231,7 @@ template <class T>
 template <class T, class D>
     requires delassus_operator<D, T>
 constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::span<T> r, const contact_settings<T>& settings = {},
-                                           std::span<T> scratch = {}) noexcept {
+                                           std::span<T> scratch = {}, const sweep_schedule<T>* schedule = nullptr) noexcept {
     const std::size_t m = W.contacts();
     contact_report<T> report;
     if (mu.size() != m || r.size() != 3 * m) return report.error = error_code::size_mismatch, report;
@@ -229,14 +244,45 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
         if (mu[i] < T(0) && !is_bilateral(W, i)) return report.error = error_code::negative_friction, report;
         if (!(A[0][0] > T(0))) return report.error = error_code::not_positive_definite, report;
     }
+    // Row by row, or phase by phase of the schedule (the parts of a phase at once, by the team's
+    // threads); sums over rows are made in row order, so that the result does not depend on the
+    // number of threads.
+    const bool coloured = schedule != nullptr && !schedule->phase_start.empty();
+    const auto each_row = [&](auto&& f) {
+        if (!coloured) {
+            for (std::size_t i = 0; i < m; ++i) f(i);
+            return;
+        }
+        for (std::size_t phase = 0; phase + 1 < schedule->phase_start.size(); ++phase) {
+            const std::size_t first = schedule->phase_start[phase], parts = schedule->phase_start[phase + 1] - first;
+            const auto sweep_parts = [&](std::size_t begin, std::size_t end) {
+                for (std::size_t p = first + begin; p < first + end; ++p)
+                    for (std::size_t k = schedule->part_start[p]; k < schedule->part_start[p + 1]; ++k) f(schedule->order[k]);
+            };
+            if (schedule->crew != nullptr && parts > 1) schedule->crew->run_parts(parts, sweep_parts);
+            else sweep_parts(0, parts);
+        }
+    };
     const auto residual = [&] {
         T sum = T(0);
-        for (std::size_t i = 0; i < m; ++i) {
-            const vec3<T> ri{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
-            const vec3<T> u = W.velocity(i, std::span<const T>(r));
-            const vec3<T> F = is_bilateral(W, i) ? u : natural_map(ri, u, mu[i]);
-            sum += linear3::dot(F, F);
+        if (!coloured) {
+            for (std::size_t i = 0; i < m; ++i) {
+                const vec3<T> u = W.velocity(i, std::span<const T>(r));
+                const vec3<T> F = is_bilateral(W, i) ? u : natural_map(vec3<T>{r[3 * i], r[3 * i + 1], r[3 * i + 2]}, u, mu[i]);
+                sum += linear3::dot(F, F);
+            }
+            return math::sqrt(sum);
         }
+        const auto rows = [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) {
+                const vec3<T> u = W.velocity(i, std::span<const T>(r));
+                const vec3<T> F = is_bilateral(W, i) ? u : natural_map(vec3<T>{r[3 * i], r[3 * i + 1], r[3 * i + 2]}, u, mu[i]);
+                schedule->partial[i] = linear3::dot(F, F);
+            }
+        };
+        if (schedule->crew != nullptr) schedule->crew->run(m, rows);
+        else rows(0, m);
+        for (std::size_t i = 0; i < m; ++i) sum += schedule->partial[i];
         return math::sqrt(sum);
     };
     report.residual = residual();
@@ -247,8 +293,7 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
     for (T& x : direction) x = T(0);
     T previous = T(0);
     while (report.residual > settings.tolerance && report.sweeps < settings.max_sweeps) {
-        T moved = T(0);
-        for (std::size_t i = 0; i < m; ++i) {
+        each_row([&](std::size_t i) {
             const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
             const vec3<T> u = W.velocity(i, std::span<const T>(r));
             vec3<T> next;
@@ -261,25 +306,25 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
             const vec3<T> d = linear3::sub(next, old);
             for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = next[a];
             W.apply(i, d);
-            if (conjugate) {
+            if (conjugate)
                 for (std::size_t a = 0; a < 3; ++a) change[3 * i + a] = d[a];
-                moved += linear3::dot(d, d);
-            }
-        }
+        });
         ++report.sweeps;
         if (conjugate && report.sweeps < settings.max_sweeps) {
             // Silcowitz, Niebe and Erleben 2010: the sweep's change g_k; β = ‖g_k‖² / ‖g_{k−1}‖², a
             // restart when β > 1; else the step β p_{k−1} is taken as well and p_k = β p_{k−1} + g_k
+            T moved = T(0);
+            for (std::size_t i = 0; i < 3 * m; ++i) moved += change[i] * change[i];
             const T beta = previous > T(0) ? moved / previous : T(2);
             previous = moved;
-            for (std::size_t i = 0; i < m; ++i) {
+            each_row([&](std::size_t i) {
                 vec3<T> step{};
                 if (beta <= T(1)) {
                     for (std::size_t a = 0; a < 3; ++a) step[a] = beta * direction[3 * i + a], r[3 * i + a] += step[a];
                     W.apply(i, step);
                 }
                 for (std::size_t a = 0; a < 3; ++a) direction[3 * i + a] = step[a] + change[3 * i + a];
-            }
+            });
         }
         if (report.sweeps % every == 0 || report.sweeps == settings.max_sweeps) report.residual = residual();
     }

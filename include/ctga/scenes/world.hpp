@@ -68,6 +68,7 @@
 #include "ctga/scenes/body_kinds.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/team.hpp"
 
 namespace ctga {
 
@@ -95,6 +96,11 @@ struct world_settings {
     std::size_t correction_sweeps = 10;  // at most, for the position correction
     constraints::contact_settings<T> solver{T(1e-8), 200, constraints::local_solve::projected};
     bool conjugate = true;               // sweeps accelerated by conjugate directions (contact_problem.hpp)
+    std::size_t threads = 1;             // the solver's sweeps on this many threads (the same results for any number)
+    std::size_t partitions = 2;          // parts the sweeps split the bodies into (1 … 64, a larger number is taken
+                                         // as 64): the results depend on it, not on the threads
+    std::size_t parallel_rows = 2048;    // fewer rows are swept by the caller's thread alone (the same schedule, the
+                                         // same results: a fork and join costs more than a sweep of a few hundred rows)
     std::size_t polish_limit = 64;       // sweeps short of the tolerance are finished by Newton
                                          // (newton_polish.hpp) on problems of at most this many contacts
 };
@@ -247,6 +253,7 @@ class physics_world {
         std::size_t offset = 0, capacity = 0, count = 0;
     };
     static constexpr std::size_t kinds = sizeof...(Kinds);
+    static constexpr std::size_t max_partitions = 64;
 
 public:
     using scalar_type = T;
@@ -270,8 +277,12 @@ public:
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
           joints_(capacity.joints, storage), joint_impulse_(capacity.joints, storage), joint_error_(capacity.joints, storage),
           joint_before_(capacity.joints, storage), joined_(capacity.joints, storage),
-          bilateral_(settings.polish_limit, storage),
+          bilateral_(settings.polish_limit, storage), order_(capacity.contacts + capacity.joints, storage),
+          part_start_(max_partitions + 2, storage), phase_start_(3, storage),
+          part_of_row_(capacity.contacts + capacity.joints, storage), partial_(capacity.contacts + capacity.joints, storage),
+          crew_(settings.threads),
           broadphase_(total_ > 0 ? total_ : 1, capacity.pairs, settings.margin, storage) {
+        settings_.partitions = settings_.partitions < 1 ? 1 : (settings_.partitions > max_partitions ? max_partitions : settings_.partitions);
         std::size_t offset = 0, k = 0;
         for_each_group([&](auto& g) {
             g.offset = offset, g.capacity = bodies[k++], offset += g.capacity;
@@ -365,6 +376,7 @@ public:
         for_each_body([&](auto&, std::size_t, std::size_t b) { before_pose_[b] = pose_[b], before_[b] = velocity_[b]; });
         if ((report.error = collide(h)) != error_code::none) return report;
         if ((report.error = build_rows(h, report)) != error_code::none) return report;
+        partition();
         warm_start();
         solve(h, report);
         integrate(h);
@@ -494,6 +506,34 @@ public:
         return error_code::none;
     }
 
+    // The rows in parts for the sweeps (contact_problem.hpp's sweep_schedule): the moving bodies
+    // are split by their index into `partitions` ranges (the order they were added in, which in a
+    // scene built row by row keeps neighbours together); a row whose bodies lie in one range goes to
+    // that range's part, in row order, and the parts are swept at once; a row across two ranges
+    // goes to the seam, swept after them. The parts depend on the partitions, not on the threads.
+    void partition() noexcept {
+        const std::size_t P = settings_.partitions > 0 ? settings_.partitions : 1;
+        const auto range_of = [&](std::uint32_t body) { return static_cast<std::size_t>(body) * P / (total_ > 0 ? total_ : 1); };
+        std::array<std::uint32_t, max_partitions + 2> count{};
+        for (std::size_t i = 0; i < contacts_; ++i) {
+            const constraints::contact_row<T>& row = rows_[i];
+            const std::size_t a = range_of(row.a.body);
+            const std::size_t p = row.b.body == constraints::no_body || range_of(row.b.body) == a ? a : P;
+            part_of_row_[i] = static_cast<std::uint16_t>(p);
+            ++count[p + 1];
+        }
+        for (std::size_t p = 0; p <= P; ++p) count[p + 1] += count[p];
+        for (std::size_t p = 0; p <= P + 1; ++p) part_start_[p] = count[p];
+        for (std::size_t i = 0; i < contacts_; ++i) order_[count[part_of_row_[i]]++] = static_cast<std::uint32_t>(i);
+        phase_start_[0] = 0, phase_start_[1] = static_cast<std::uint32_t>(P), phase_start_[2] = static_cast<std::uint32_t>(P + 1);
+    }
+    constraints::sweep_schedule<T> schedule() noexcept {
+        const std::size_t P = settings_.partitions > 0 ? settings_.partitions : 1;
+        return {std::span<const std::uint32_t>(order_.data(), contacts_), std::span<const std::uint32_t>(part_start_.data(), P + 2),
+                std::span<const std::uint32_t>(phase_start_.data(), 3), contacts_ >= settings_.parallel_rows ? &crew_ : nullptr,
+                std::span<T>(partial_.data(), contacts_)};
+    }
+
     // Each contact starts from the impulse the same contact ended the last step with, applied to
     // the bodies' velocities: among the stored contacts of the same two bodies within the margin
     // of it (in body a's frame), the one with the same feature id, else the nearest; a new
@@ -544,9 +584,10 @@ public:
         if (small) polish(W, report.contact);
         if (!small || !report.contact.converged) {
             const std::size_t steps = report.contact.polish_steps;
+            const constraints::sweep_schedule<T> plan = schedule();
             report.contact = constraints::solve_contacts<T>(
                 W, std::span<const T>(mu_.data(), contacts_), std::span<T>(impulse_.data(), 3 * contacts_), settings_.solver,
-                settings_.conjugate ? std::span<T>(conjugate_.data(), 6 * contacts_) : std::span<T>{});
+                settings_.conjugate ? std::span<T>(conjugate_.data(), 6 * contacts_) : std::span<T>{}, &plan);
             if (small && !report.contact.converged && report.contact.error == error_code::none) polish(W, report.contact);
             report.contact.polish_steps += steps;
         }
@@ -573,8 +614,9 @@ public:
         constraints::rows_delassus<T> P{rows(), mobilities(), std::span<screw<T>>(pseudo_.data(), total_)};
         constraints::contact_settings<T> correcting = settings_.solver;
         correcting.max_sweeps = settings_.correction_sweeps;
+        const constraints::sweep_schedule<T> plan = schedule();
         report.correction = constraints::solve_contacts<T>(P, std::span<const T>(mu_.data(), contacts_),
-                                                           std::span<T>(correction_.data(), 3 * contacts_), correcting);
+                                                           std::span<T>(correction_.data(), 3 * contacts_), correcting, {}, &plan);
     }
 
     // Newton on the problem held densely: W_ij = Σ over the bodies contacts i and j share of
@@ -781,6 +823,10 @@ private:
     std::pmr::vector<vec3<T>> joint_impulse_, joint_error_, joint_before_;
     std::pmr::vector<std::uint64_t> joined_;  // pairs of jointed bodies, sorted
     std::pmr::vector<unsigned char> bilateral_;
+    std::pmr::vector<std::uint32_t> order_, part_start_, phase_start_;  // rows by part (sweep_schedule)
+    std::pmr::vector<std::uint16_t> part_of_row_;
+    std::pmr::vector<T> partial_;
+    team crew_;
     std::size_t joints_count_ = 0, joined_count_ = 0;
     std::size_t manifolds_ = 0, contacts_ = 0, stored_count_ = 0;  // contacts_: rows in use, the joints' first
     collision::broadphase<T> broadphase_;

@@ -162,6 +162,43 @@ TEST_CASE("world: a free body on a spherical joint moves as the same pendulum bu
     }
 }
 
+TEST_CASE("world: a box pinched between two fingers holds when μF > mg/2 and slides at the Coulomb rate when not") {
+    // fingers 4 x 10 x 10 cm (density 1000) either side of a 10 cm cube (density 500), μ = 0.5, no
+    // ground: each finger carries its weight and half the box's, presses with F towards the other
+    // along the line between them (an internal pair) and is held level by the torque that balances
+    // the friction at its face; the box hangs by friction alone
+    for (const double F : {10.0, 4.0}) {
+        const double mu = 0.5;
+        ctga::physics_world<double, plane, cube> w({3}, {.statics = 0, .contacts = 32, .pairs = 8});
+        w.settings().solver.tolerance = 1e-12;
+        REQUIRE(w.add_body<0>(*collision::make_box(0.05, 0.05, 0.05), 500.0, motor<double>(ctga::make_translator(0.0, 0.0, 1.0)), {mu, 0.0}));
+        for (const double side : {-1.0, 1.0})
+            REQUIRE(w.add_body<0>(*collision::make_box(0.02, 0.05, 0.05), 1000.0, motor<double>(ctga::make_translator(0.07 * side, 0.0, 1.0)),
+                                  {mu, 0.0}));
+        const double mb = w.body<0>(0).m(), mf = w.body<0>(1).m();
+        double worst = 0, slip = 0;
+        for (int k = 0; k < 600; ++k) {
+            const ctga::vec3<double> a = centre(w.pose<0>(1)), b = centre(w.pose<0>(2));
+            ctga::vec3<double> d = ctga::linear3::sub(b, a);
+            d = ctga::linear3::scale(1 / std::sqrt(ctga::linear3::dot(d, d)), d);
+            w.set_wrench<0>(1, {F * d[0], F * d[1], F * d[2] + (mf + mb / 2) * g}, {0.0, -0.01 * mb * g, 0.0});
+            w.set_wrench<0>(2, {-F * d[0], -F * d[1], -F * d[2] + (mf + mb / 2) * g}, {0.0, 0.01 * mb * g, 0.0});
+            const ctga::step_report<double> r = w.step(h);
+            REQUIRE(r.error == ctga::error_code::none);
+            CHECK(r.contact.converged);
+            slip = w.velocity<0>(0)[5] - (w.velocity<0>(1)[5] + w.velocity<0>(2)[5]) / 2;
+            worst = std::max(worst, std::abs(slip));
+            if (F < mb * g / (2 * mu)) break;  // the weak grip: one step of sliding is the test
+        }
+        if (mu * F > mb * g / 2) CHECK(worst <= 1e-6);  // the issue asks < 1 µm/s (MuJoCo users measure 50-155 µm/s)
+        else {
+            // sliding: the box falls at (2μF − m_b g)/m_b, each finger at (m_b g/2 − μF)/m_f, from rest
+            const double relative = (2 * mu * F - mb * g) / mb - (mb * g / 2 - mu * F) / mf;
+            CHECK(std::abs(slip / h - relative) <= 1e-9 * std::abs(relative));
+        }
+    }
+}
+
 TEST_CASE("world: the same state, bit for bit, with one thread and with two, run after run") {
     // (300 steps: 1,000 took 22 s of this unit at -Og with two threads, for no more of the code)
     // a pyramid of 21 cubes and a chain of 6 spheres on spherical joints swinging into it: two body

@@ -267,7 +267,7 @@ public:
                                std::pmr::vector<typename Kinds::inertia_type::template data<T>>(storage)}...},
           total_(sum(bodies)),
           pose_(total_, storage), before_pose_(total_, storage), map_(total_, storage), velocity_(total_, storage),
-          before_(total_, storage), pseudo_(total_, storage), mobility_(total_, storage), material_(total_, storage),
+          before_(total_, storage), pseudo_(total_, storage), force_(total_, storage), torque_(total_, storage), mobility_(total_, storage), material_(total_, storage),
           reach_(total_, storage), radius_(total_, storage), proxy_(total_, storage), static_shape_(storage),
           static_map_(capacity.statics, storage), static_box_(capacity.statics, storage), static_material_(capacity.statics, storage),
           static_bounded_(capacity.statics, storage), found_(capacity.contacts, storage), rows_(capacity.contacts + capacity.joints, storage),
@@ -443,9 +443,13 @@ public:
             const screw<T> sb{wb[0], wb[1], wb[2], T(0), T(0), T(0)};
             const screw<T> ab = body_acceleration<subspace::full, K, T>(g.data[i], sb);
             const vec3<T> dw = linear3::apply(R, vec3<T>{ab[0], ab[1], ab[2]});
-            velocity_[b] = screw<T>{s[0] + h * dw[0], s[1] + h * dw[1], s[2] + h * dw[2],
-                                    s[3] + h * settings_.gravity[0], s[4] + h * settings_.gravity[1], s[5] + h * settings_.gravity[2]};
             mobility_[b] = world_detail::world_mobility<K, T>(g.data[i], R);
+            // the applied wrench's share: h N⁻¹ (τ, f)
+            const screw<T> dv = constraints::respond(mobility_[b], coscrew<T>{h * torque_[b][0], h * torque_[b][1], h * torque_[b][2],
+                                                                             h * force_[b][0], h * force_[b][1], h * force_[b][2]});
+            velocity_[b] = screw<T>{s[0] + h * dw[0] + dv[0], s[1] + h * dw[1] + dv[1], s[2] + h * dw[2] + dv[2],
+                                    s[3] + h * settings_.gravity[0] + dv[3], s[4] + h * settings_.gravity[1] + dv[4],
+                                    s[5] + h * settings_.gravity[2] + dv[5]};
             pseudo_[b] = screw<T>{};
         });
         contacts_ = 0;
@@ -667,7 +671,11 @@ public:
             const translator<T> t = make_translator(G.t[0] + h * m[3], G.t[1] + h * m[4], G.t[2] + h * m[5]);
             const rotor<T> turn = project<rotor<T>>(ctga::exp(screw<T>{h * m[0], h * m[1], h * m[2], T(0), T(0), T(0)}));
             const rotor<T> r0 = project<rotor<T>>(pose_[b] * conj(make_translator(G.t[0], G.t[1], G.t[2])));
-            pose_[b] = renormalize(motor<T>(t * (turn * r0)));
+            // a non-finite velocity gives a motor renormalize cannot mend: its NaNs are kept, and
+            // step() then returns to the state it started from
+            const checked<motor<T>> g = renormalize_checked(motor<T>(t * (turn * r0)));
+            pose_[b] = g ? g.value : motor<T>(t * (turn * r0));
+            if (!g) pose_[b][0] = std::numeric_limits<T>::quiet_NaN();
         });
     }
 
@@ -696,6 +704,13 @@ public:
     [[nodiscard]] const screw<T>& velocity(std::size_t i) const noexcept { return velocity_[std::get<I>(groups_).offset + i]; }
     template <std::size_t I>
     void set_velocity(std::size_t i, const screw<T>& s) noexcept { velocity_[std::get<I>(groups_).offset + i] = s; }
+    // A force f through body i's centre of mass and a torque τ (world axes, N and N m) on every
+    // step from now on, besides gravity; zeros to remove them. A non-finite one shows as a
+    // non-finite step.
+    template <std::size_t I>
+    void set_wrench(std::size_t i, const vec3<T>& f, const vec3<T>& tau = {}) noexcept {
+        force_[std::get<I>(groups_).offset + i] = f, torque_[std::get<I>(groups_).offset + i] = tau;
+    }
     template <std::size_t I>
     [[nodiscard]] const typename kind<I>::inertia_type::template data<T>& body(std::size_t i) const noexcept {
         return std::get<I>(groups_).data[i];
@@ -802,6 +817,7 @@ private:
     std::pmr::vector<motor<T>> pose_, before_pose_;
     std::pmr::vector<motor_map<T>> map_;
     std::pmr::vector<screw<T>> velocity_, before_, pseudo_;
+    std::pmr::vector<vec3<T>> force_, torque_;
     std::pmr::vector<constraints::mobility<T>> mobility_;
     std::pmr::vector<material<T>> material_;
     std::pmr::vector<T> reach_, radius_;

@@ -90,6 +90,8 @@ template <class T = double>
 struct world_settings {
     vec3<T> gravity{T(0), T(0), T(-9.81)};
     T margin = T(0.02);                  // speculative distance: points this far apart are rows
+    T fat_margin = T(0.1);               // the broadphase's boxes are this much larger (Box2D's): a body moving
+                                         // less keeps its place in the tree (≥ margin)
     T restitution_threshold = T(0.05);   // slower impacts are inelastic (m/s)
     T slop = T(1e-4);                    // penetration left alone (m)
     T correction = T(0.2);               // fraction of the rest removed per step
@@ -268,7 +270,7 @@ public:
           total_(sum(bodies)),
           pose_(total_, storage), before_pose_(total_, storage), map_(total_, storage), velocity_(total_, storage),
           before_(total_, storage), pseudo_(total_, storage), force_(total_, storage), torque_(total_, storage), mobility_(total_, storage), material_(total_, storage),
-          reach_(total_, storage), radius_(total_, storage), proxy_(total_, storage), static_shape_(storage),
+          reach_(total_, storage), radius_(total_, storage), box_(total_, storage), proxy_(total_, storage), static_shape_(storage),
           static_map_(capacity.statics, storage), static_box_(capacity.statics, storage), static_material_(capacity.statics, storage),
           static_bounded_(capacity.statics, storage), found_(capacity.contacts, storage), rows_(capacity.contacts + capacity.joints, storage),
           keys_(capacity.contacts + capacity.joints, storage), separation_(capacity.contacts + capacity.joints, storage), before_normal_(capacity.contacts + capacity.joints, storage),
@@ -281,7 +283,7 @@ public:
           part_start_(max_partitions + 2, storage), phase_start_(3, storage),
           part_of_row_(capacity.contacts + capacity.joints, storage), partial_(capacity.contacts + capacity.joints, storage),
           crew_(settings.threads),
-          broadphase_(total_ > 0 ? total_ : 1, capacity.pairs, settings.margin, storage) {
+          broadphase_(total_ > 0 ? total_ : 1, capacity.pairs, settings.fat_margin, storage) {
         settings_.partitions = settings_.partitions < 1 ? 1 : (settings_.partitions > max_partitions ? max_partitions : settings_.partitions);
         std::size_t offset = 0, k = 0;
         for_each_group([&](auto& g) {
@@ -396,14 +398,18 @@ public:
     // bodies' reach.
     error_code collide(const T& h) noexcept {
         manifolds_ = 0;
-        for_each_body([&](auto& g, std::size_t i, std::size_t b) {
+        for_each_body_at_once([&](auto& g, std::size_t i, std::size_t b) {
             map_[b] = map_of(pose_[b]);
             const vec3<T> w{velocity_[b][0], velocity_[b][1], velocity_[b][2]}, v{velocity_[b][3], velocity_[b][4], velocity_[b][5]};
             reach_[b] = h * (world_detail::norm(v) + world_detail::norm(w) * radius_[b]);
             collision::aabb<T> box = bounds_of(g.shape[i], map_[b]);
             const T grow = h * world_detail::norm(w) * radius_[b];
             for (std::size_t c = 0; c < 3; ++c) box.lower[c] -= grow, box.upper[c] += grow;
-            broadphase_.move_proxy(proxy_[b], box, linear3::scale(h, v));
+            box_[b] = box;
+        });
+        for_each_body([&](auto&, std::size_t, std::size_t b) {
+            const vec3<T> v{velocity_[b][3], velocity_[b][4], velocity_[b][5]};
+            broadphase_.move_proxy(proxy_[b], box_[b], linear3::scale(h, v));
         });
         bool full = false;
         const error_code e = broadphase_.for_each_pair([&](collision::proxy_id pa, collision::proxy_id pb) {
@@ -434,7 +440,7 @@ public:
     // frame, by the kind's own formula), each body's mobility in the world's axes, and each
     // manifold point's rows.
     error_code build_rows(const T& h, step_report<T>& report) noexcept {
-        for_each_body([&](auto& g, std::size_t i, std::size_t b) {
+        for_each_body_at_once([&](auto& g, std::size_t i, std::size_t b) {
             using G = std::remove_cvref_t<decltype(g)>;
             using K = typename G::K;
             const mat3<T>& R = map_[b].R;
@@ -455,11 +461,11 @@ public:
         contacts_ = 0;
         T deepest = T(0), worst = T(0);
         if (joints_count_ > rows_.size()) return error_code::capacity_exceeded;
-        for (std::size_t j = 0; j < joints_count_; ++j) {
+        at_once(joints_count_, [&](std::size_t j) {
             const world_detail::joint_record<T>& J = joints_[j];
             const vec3<T> pa = linear3::add(linear3::apply(map_[J.a].R, J.anchor_a), map_[J.a].t);
             const vec3<T> pb = J.b == constraints::no_body ? J.anchor_b : linear3::add(linear3::apply(map_[J.b].R, J.anchor_b), map_[J.b].t);
-            constraints::contact_row<T>& row = rows_[contacts_];
+            constraints::contact_row<T>& row = rows_[j];
             row.direction = {vec3<T>{T(1), T(0), T(0)}, vec3<T>{T(0), T(1), T(0)}, vec3<T>{T(0), T(0), T(1)}};
             row.a = constraints::make_side(J.a, map_[J.a].t, pa, row.direction);
             row.b = J.b == constraints::no_body ? constraints::row_side<T>{} : constraints::make_side(J.b, map_[J.b].t, pb, row.direction);
@@ -468,11 +474,10 @@ public:
             row.bias = {}, row.mu = T(0), row.bilateral = true;
             joint_error_[j] = linear3::sub(pb, pa);
             joint_before_[j] = row_velocity(row, before_);
-            mu_[contacts_] = T(0);
-            const T e = math::sqrt(linear3::dot(joint_error_[j], joint_error_[j]));
-            worst = e > worst ? e : worst;
-            ++contacts_;
-        }
+            mu_[j] = T(0);
+        });
+        for (std::size_t j = 0; j < joints_count_; ++j) worst = std::max(worst, math::sqrt(linear3::dot(joint_error_[j], joint_error_[j])));
+        contacts_ = joints_count_;
         for (std::size_t f = 0; f < manifolds_; ++f) {
             const world_detail::found_manifold<T>& fm = found_[f];
             const bool fixed = (fm.b & world_detail::statics_bit) != 0;
@@ -664,7 +669,7 @@ public:
 
     // Poses from the average of the velocities before and after the jump, plus the pseudo-velocity.
     void integrate(const T& h) noexcept {
-        for_each_body([&](auto&, std::size_t, std::size_t b) {
+        for_each_body_at_once([&](auto&, std::size_t, std::size_t b) {
             screw<T> m;
             for (std::size_t c = 0; c < 6; ++c) m[c] = (before_[b][c] + velocity_[b][c]) / T(2) + pseudo_[b][c];
             const motor_map<T>& G = map_[b];
@@ -737,6 +742,27 @@ private:
         for_each_group([&](auto& g) {
             for (std::size_t i = 0; i < g.count; ++i) f(g, i, g.offset + i);
         });
+    }
+    // The same, the bodies of each kind shared among the team's threads (a body's work touches that
+    // body only; a few bodies are done by the caller alone).
+    template <class F>
+    void for_each_body_at_once(F&& f) {
+        for_each_group([&](auto& g) {
+            const auto chunk = [&](std::size_t begin, std::size_t end) {
+                for (std::size_t i = begin; i < end; ++i) f(g, i, g.offset + i);
+            };
+            if (g.count >= settings_.parallel_rows / 2) crew_.run(g.count, chunk);
+            else chunk(0, g.count);
+        });
+    }
+    // f(i) for i in [0, n), shared among the team's threads when n is large
+    template <class F>
+    void at_once(std::size_t n, F&& f) {
+        const auto chunk = [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) f(i);
+        };
+        if (n >= settings_.parallel_rows / 2) crew_.run(n, chunk);
+        else chunk(0, n);
     }
     template <class F>
     void with_body(std::uint32_t b, F&& f) {
@@ -821,6 +847,7 @@ private:
     std::pmr::vector<constraints::mobility<T>> mobility_;
     std::pmr::vector<material<T>> material_;
     std::pmr::vector<T> reach_, radius_;
+    std::pmr::vector<collision::aabb<T>> box_;  // this step's grown boxes
     std::pmr::vector<collision::proxy_id> proxy_;
     std::pmr::vector<Static> static_shape_;
     std::pmr::vector<motor_map<T>> static_map_;

@@ -81,6 +81,8 @@
 #include <benchmark/benchmark.h>
 #include <mujoco/mujoco.h>
 
+#include "mujoco_xml.hpp"
+
 namespace bench::chains {
 
 namespace {
@@ -155,22 +157,6 @@ std::string mjcf(const mujoco_case& c) {
     return x.str();
 }
 
-// mj_loadXML from a string, through a virtual file system.
-mjModel* load(const std::string& xml, const std::string& name, std::string& error) {
-    auto vfs = std::make_unique<mjVFS>();
-    mj_defaultVFS(vfs.get());
-    if (mj_makeEmptyFileVFS(vfs.get(), name.c_str(), static_cast<int>(xml.size())) != 0) {
-        error = "mj_makeEmptyFileVFS failed";
-        return nullptr;
-    }
-    const int f = mj_findFileVFS(vfs.get(), name.c_str());
-    std::memcpy(vfs->filedata[f], xml.data(), xml.size());
-    char buffer[1000] = "";
-    mjModel* m = mj_loadXML(name.c_str(), vfs.get(), buffer, sizeof buffer);
-    mj_deleteVFS(vfs.get());
-    error = buffer;
-    return m;
-}
 
 // ---- coordinates ---------------------------------------------------------------------------
 
@@ -334,7 +320,7 @@ void add_mujoco(std::vector<entry>& table, const mujoco_case& c) {
     }
     auto x = std::make_shared<bridge>();
     std::string error;
-    x->m = load(xml, cat("ctga_", c.label, ".xml"), error);
+    x->m = bench::load_mjcf(xml, cat("ctga_", c.label, ".xml"), error);
     if (!x->m) return refuse(cat("mj_loadXML: ", error));
     x->d = mj_makeData(x->m);
     x->nq = static_cast<std::size_t>(x->m->nq);

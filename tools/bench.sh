@@ -77,6 +77,11 @@ cmake --build "$BUILD_DIR" --target ctga_collision_bench -j"$(nproc)"
 "$out/ctga_collision_bench" --benchmark_repetitions=7 --benchmark_enable_random_interleaving=true --benchmark_report_aggregates_only=true \
     --benchmark_min_time=0.2 --benchmark_out="$out/collision.json" --benchmark_out_format=json
 
+# scenes with contact: ctga_contact_bench beside Bullet and MuJoCo (contact.json; one run each:
+# a scene is minutes of steps, its counters the figures)
+cmake --build "$BUILD_DIR" --target ctga_contact_bench -j"$(nproc)"
+"$out/ctga_contact_bench" --benchmark_out="$out/contact.json" --benchmark_out_format=json
+
 /usr/bin/python3 tools/render_benchmarks.py "$out/results.json" "$out/instructions.txt" \
     "$out/compile_cost.md" docs/benchmarks.md docs/img/benchmarks.svg \
     "$out/chains.json" "$out/chains_instructions.txt" docs/img/chains_scaling.svg "${scaling[@]}"

@@ -206,6 +206,7 @@ TEST_CASE("world: the same state, bit for bit, with one thread and with two, run
     const auto run = [](std::size_t threads) {
         ctga::world_settings<double> set;
         set.threads = threads;
+        set.partitions = 2;
         set.parallel_rows = 0;  // the team sweeps however few rows there are
         set.solver.tolerance = 1e-9;
         set.solver.max_sweeps = 30;

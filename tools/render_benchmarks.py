@@ -9,10 +9,12 @@ COMPILE_COST.md: the fragment tools/compile-cost.sh writes (included when it exi
 CHAINS.json, SCALING.json: ctga_chains_bench and ctga_chains_scaling_* runs (kinematic trees),
 CHAINS_INSTRUCTIONS.txt: "algorithm_tree implementation instructions" lines; SCALING.svg the plot.
 collision.json beside RESULTS.json (a ctga_collision_bench run, tools/bench.sh), when it exists: the
-collision tables (collision_<pair>/<implementation>, contact_<pair>/<implementation> rows).
+collision tables (collision_<pair>/<implementation>, contact_<pair>/<implementation> rows); contact.json
+(ctga_contact_bench): the scenes' table.
 
     render_benchmarks.py --collision COLLISION.json OUT.md
-rewrites only the collision section of OUT.md from a ctga_collision_bench run.
+rewrites only the collision section of OUT.md from a ctga_collision_bench run (--contact CONTACT.json:
+the scenes' section from a ctga_contact_bench run).
 """
 import json
 import os
@@ -365,13 +367,47 @@ def collision_section(collision_json):
     return out + [""]
 
 
-def replace_collision_section(collision_json, out_md):
-    """Writes the collision tables into OUT.md in place (the section up to the next "## ", or before the
-    compile-time tables): render_benchmarks.py --collision COLLISION.json OUT.md."""
+def contact_section(contact_json):
+    """Scenes of bodies that touch (bench/contact.cpp): ms per step and each scene's accuracy, one run."""
+    with open(contact_json) as f:
+        data = json.load(f)
+    rows = {}
+    for b in data["benchmarks"]:
+        scene, impl = b["run_name"].split("/iterations")[0].rsplit("/", 1)
+        rows.setdefault(scene, []).append((impl, b))
+    out = ["## Scenes with contact", "",
+           "`ctga_contact_bench` (`bench/contact.cpp`): Box3D's scenes from rest, one run each (a scene is minutes of",
+           "steps); ms per step, and the scene's accuracy: the top cube's displacement at the end (drift), the largest",
+           "penetration, the largest joint gap. ctga at a tolerance of 1e-6 on the natural-map residual and at most 100",
+           "sweeps a step (`<scene>_work`: n sweeps); Bullet 3.24 and MuJoCo 2.2.2 at their defaults.", ""]
+    def bullet_of(scene):  # <scene>_work rows against <scene>'s Bullet row
+        entries = rows.get(scene.removesuffix("_work"), [])
+        return next((b.get("ms_per_step") for impl, b in entries if impl == "bullet" and not b.get("error_occurred")), None)
+
+    def figure(x):  # a scene without that measure shows a dash
+        return f"{x:.3g}" if x else "—"
+
+    for scene, entries in rows.items():
+        bullet = bullet_of(scene)
+        out += [f"**{scene}**", "", "| implementation | ms/step | / Bullet | drift (m) | penetration (m) | joint gap (m) |",
+                "| --- | ---: | ---: | ---: | ---: | ---: |"]
+        for impl, b in entries:
+            if b.get("error_occurred"):
+                out.append(f"| {impl} | {b.get('error_message', 'not run')} | | | | |")
+                continue
+            ms = b["ms_per_step"]
+            rel = f"{ms / bullet:.2f}" if bullet else ""
+            out.append(f"| {impl} | {ms:.1f} | {rel} | {figure(b['drift'])} | {figure(b['penetration'])} | {figure(b['joint_error'])} |")
+        out.append("")
+    return out
+
+
+def replace_section(title, new, out_md):
+    """Writes a section into OUT.md in place: the section `## title` up to the next "## ", or a new one
+    before the compile-time tables."""
     with open(out_md) as f:
         lines = f.read().split("\n")
-    new = collision_section(collision_json)
-    start = next((i for i, l in enumerate(lines) if l.startswith("## Collision")), None)
+    start = next((i for i, l in enumerate(lines) if l.startswith("## " + title)), None)
     if start is None:
         at = next((i for i, l in enumerate(lines) if l.startswith("## Compile time")), len(lines))
         lines[at:at] = new
@@ -393,7 +429,10 @@ def kept_section(*path):
 
 def main():
     if sys.argv[1] == "--collision":
-        replace_collision_section(sys.argv[2], sys.argv[3])
+        replace_section("Collision", collision_section(sys.argv[2]), sys.argv[3])
+        return
+    if sys.argv[1] == "--contact":
+        replace_section("Scenes with contact", contact_section(sys.argv[2]), sys.argv[3])
         return
     results, instr_path, compile_md, out_md, out_svg = sys.argv[1:6]
     context, t = medians(results)
@@ -500,6 +539,9 @@ def main():
     collision_json = os.path.join(os.path.dirname(os.path.abspath(results)), "collision.json")
     if os.path.exists(collision_json):
         lines += collision_section(collision_json)
+    contact_json = os.path.join(os.path.dirname(os.path.abspath(results)), "contact.json")
+    if os.path.exists(contact_json):
+        lines += contact_section(contact_json)
     if os.path.exists(compile_md):
         with open(compile_md) as f:
             lines += ["## Compile time", "", f.read().strip(), ""]

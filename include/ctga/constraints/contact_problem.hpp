@@ -224,6 +224,25 @@ struct sweep_schedule {
     std::span<T> partial;
 };
 
+// f(i) for the m rows: in order, or phase by phase of the schedule, the parts of a phase at once
+// (f may change the bodies of its row: no two parts of a phase share one).
+template <class T, class F>
+void for_each_row(const sweep_schedule<T>* schedule, std::size_t m, F&& f) {
+    if (schedule == nullptr || schedule->phase_start.empty()) {
+        for (std::size_t i = 0; i < m; ++i) f(i);
+        return;
+    }
+    for (std::size_t phase = 0; phase + 1 < schedule->phase_start.size(); ++phase) {
+        const std::size_t first = schedule->phase_start[phase], parts = schedule->phase_start[phase + 1] - first;
+        const auto sweep_parts = [&](std::size_t begin, std::size_t end) {
+            for (std::size_t p = first + begin; p < first + end; ++p)
+                for (std::size_t k = schedule->part_start[p]; k < schedule->part_start[p + 1]; ++k) f(std::size_t{schedule->order[k]});
+        };
+        if (schedule->crew != nullptr && parts > 1) schedule->crew->run_parts(parts, sweep_parts);
+        else sweep_parts(0, parts);
+    }
+}
+
 // Sweeps of nonsmooth Gauss–Seidel from the impulses in r (the warm start) until ‖F(r)‖₂ ≤ the
 // tolerance. Refused before any sweep: a non-finite μ, W block, velocity or impulse (non_finite),
 // μ < 0 (negative_friction), a block whose normal entry is not positive (not_positive_definite),
@@ -248,21 +267,7 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
     // threads); sums over rows are made in row order, so that the result does not depend on the
     // number of threads.
     const bool coloured = schedule != nullptr && !schedule->phase_start.empty();
-    const auto each_row = [&](auto&& f) {
-        if (!coloured) {
-            for (std::size_t i = 0; i < m; ++i) f(i);
-            return;
-        }
-        for (std::size_t phase = 0; phase + 1 < schedule->phase_start.size(); ++phase) {
-            const std::size_t first = schedule->phase_start[phase], parts = schedule->phase_start[phase + 1] - first;
-            const auto sweep_parts = [&](std::size_t begin, std::size_t end) {
-                for (std::size_t p = first + begin; p < first + end; ++p)
-                    for (std::size_t k = schedule->part_start[p]; k < schedule->part_start[p + 1]; ++k) f(schedule->order[k]);
-            };
-            if (schedule->crew != nullptr && parts > 1) schedule->crew->run_parts(parts, sweep_parts);
-            else sweep_parts(0, parts);
-        }
-    };
+    const auto each_row = [&](auto&& f) { for_each_row(schedule, m, f); };
     const auto residual = [&] {
         T sum = T(0);
         if (!coloured) {

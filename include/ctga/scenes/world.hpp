@@ -556,11 +556,11 @@ public:
         const constraints::rows_delassus<T> W{rows(), mobilities(), velocities()};
         const world_detail::stored_impulse<T>*first = stored_.data(), *end = first + stored_count_;
         const auto by_key = [](const world_detail::stored_impulse<T>& s, const world_detail::contact_key& k) { return s.key < k; };
-        for (std::size_t j = 0; j < joints_count_; ++j) {
+        at_once(joints_count_, [&](std::size_t j) {
             for (std::size_t k = 0; k < 3; ++k) impulse_[3 * j + k] = joint_impulse_[j][k];
-            W.apply(j, joint_impulse_[j]);
-        }
-        for (std::size_t c = joints_count_; c < contacts_; ++c) {
+        });
+        at_once(contacts_ - joints_count_, [&](std::size_t n) {
+            const std::size_t c = joints_count_ + n;
             const world_detail::contact_key& key = keys_[c];
             const vec3<T> local = local_point(c);
             const world_detail::stored_impulse<T>* match = nullptr;
@@ -578,8 +578,12 @@ public:
             if (match)
                 for (std::size_t k = 0; k < 3; ++k) r[k] = linear3::dot(rows_[c].direction[k], match->r);
             for (std::size_t k = 0; k < 3; ++k) impulse_[3 * c + k] = r[k];
-            if (match) W.apply(c, r);
-        }
+        });
+        // applied part by part (rows of one part share no body with another's)
+        const constraints::sweep_schedule<T> plan = schedule();
+        constraints::for_each_row(&plan, contacts_, [&](std::size_t c) {
+            W.apply(c, vec3<T>{impulse_[3 * c], impulse_[3 * c + 1], impulse_[3 * c + 2]});
+        });
     }
 
     // The frictional contact problem to the settings' tolerance: a problem of at most
@@ -602,25 +606,29 @@ public:
             if (small && !report.contact.converged && report.contact.error == error_code::none) polish(W, report.contact);
             report.contact.polish_steps += steps;
         }
-        bool any = false;
-        for (std::size_t j = 0; j < joints_count_; ++j) {
-            // the joint's gap at the step's end, φ⁺ = φ + h (u⁻ + u⁺)/2 on each axis, removed by β per step
-            correction_[3 * j] = correction_[3 * j + 1] = correction_[3 * j + 2] = T(0);
-            const vec3<T> after = row_velocity(rows_[j], velocity_);
-            for (std::size_t k = 0; k < 3; ++k) {
-                const T gap = joint_error_[j][k] + h * (joint_before_[j][k] + after[k]) / T(2);
-                rows_[j].bias[k] = gap / h;  // all of it: the pseudo-velocities add no energy
-                any = any || gap != T(0);  // a joint has no slop
-            }
-        }
-        for (std::size_t c = joints_count_; c < contacts_; ++c) {
+        // (each row's flag in partial_, read in row order after)
+        at_once(contacts_, [&](std::size_t c) {
             correction_[3 * c] = correction_[3 * c + 1] = correction_[3 * c + 2] = T(0);
-            const T after = normal_speed(rows_[c], velocity_);
-            const T gap = separation_[c] + h * (before_normal_[c] + after) / T(2) + settings_.slop;
-            rows_[c].bias[0] = gap < T(0) ? settings_.correction * gap / h : gap / h;
-            any = any || gap < T(0);
-            mu_[c] = T(0);
-        }
+            bool needed = false;
+            if (c < joints_count_) {
+                // the joint's gap at the step's end, φ⁺ = φ + h (u⁻ + u⁺)/2 on each axis, all of it removed
+                const vec3<T> after = row_velocity(rows_[c], velocity_);
+                for (std::size_t k = 0; k < 3; ++k) {
+                    const T gap = joint_error_[c][k] + h * (joint_before_[c][k] + after[k]) / T(2);
+                    rows_[c].bias[k] = gap / h;  // the pseudo-velocities add no energy
+                    needed = needed || gap != T(0);  // a joint has no slop
+                }
+            } else {
+                const T after = normal_speed(rows_[c], velocity_);
+                const T gap = separation_[c] + h * (before_normal_[c] + after) / T(2) + settings_.slop;
+                rows_[c].bias[0] = gap < T(0) ? settings_.correction * gap / h : gap / h;
+                needed = gap < T(0);
+                mu_[c] = T(0);
+            }
+            partial_[c] = needed ? T(1) : T(0);
+        });
+        bool any = false;
+        for (std::size_t c = 0; c < contacts_ && !any; ++c) any = partial_[c] != T(0);
         if (!any) return;
         constraints::rows_delassus<T> P{rows(), mobilities(), std::span<screw<T>>(pseudo_.data(), total_)};
         constraints::contact_settings<T> correcting = settings_.solver;

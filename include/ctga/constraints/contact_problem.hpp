@@ -268,22 +268,19 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
     // number of threads.
     const bool coloured = schedule != nullptr && !schedule->phase_start.empty();
     const auto each_row = [&](auto&& f) { for_each_row(schedule, m, f); };
+    const auto term = [&](std::size_t i) {  // ‖F_i‖²
+        const vec3<T> u = W.velocity(i, std::span<const T>(r));
+        const vec3<T> F = is_bilateral(W, i) ? u : natural_map(vec3<T>{r[3 * i], r[3 * i + 1], r[3 * i + 2]}, u, mu[i]);
+        return linear3::dot(F, F);
+    };
     const auto residual = [&] {
         T sum = T(0);
         if (!coloured) {
-            for (std::size_t i = 0; i < m; ++i) {
-                const vec3<T> u = W.velocity(i, std::span<const T>(r));
-                const vec3<T> F = is_bilateral(W, i) ? u : natural_map(vec3<T>{r[3 * i], r[3 * i + 1], r[3 * i + 2]}, u, mu[i]);
-                sum += linear3::dot(F, F);
-            }
+            for (std::size_t i = 0; i < m; ++i) sum += term(i);
             return math::sqrt(sum);
         }
         const auto rows = [&](std::size_t begin, std::size_t end) {
-            for (std::size_t i = begin; i < end; ++i) {
-                const vec3<T> u = W.velocity(i, std::span<const T>(r));
-                const vec3<T> F = is_bilateral(W, i) ? u : natural_map(vec3<T>{r[3 * i], r[3 * i + 1], r[3 * i + 2]}, u, mu[i]);
-                schedule->partial[i] = linear3::dot(F, F);
-            }
+            for (std::size_t i = begin; i < end; ++i) schedule->partial[i] = term(i);
         };
         if (schedule->crew != nullptr) schedule->crew->run(m, rows);
         else rows(0, m);

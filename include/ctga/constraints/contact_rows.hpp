@@ -122,6 +122,21 @@ template <class T>
     return W;
 }
 
+// The row's velocities J s from the bodies' screws s (no offsets): u_k = L_k^B(s_B) − L_k^A(s_A).
+template <class T>
+[[nodiscard]] constexpr vec3<T> row_velocity(const contact_row<T>& c, std::span<const screw<T>> s) noexcept {
+    vec3<T> u{};
+    const auto add = [&](const row_side<T>& side, const T& sign) {
+        if (side.body == no_body) return;
+        const screw<T>& sb = s[side.body];
+        const vec3<T> w{sb[0], sb[1], sb[2]}, v{sb[3], sb[4], sb[5]};
+        for (std::size_t k = 0; k < 3; ++k) u[k] += sign * (linear3::dot(side.moment[k], w) + linear3::dot(c.direction[k], v));
+    };
+    add(c.b, T(1));
+    add(c.a, T(-1));
+    return u;
+}
+
 // The rows of a step as the solver's Delassus operator (contact_problem.hpp): the velocities are
 // the moving bodies' screws, kept current as impulses change (u = J s, s = s_free + N⁻¹ Jᵀ r),
 // so a contact's velocity costs its sides' pairings and a change of impulse dr one mobility
@@ -137,17 +152,7 @@ struct rows_delassus {
     [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept { return rows[i].bilateral; }
     [[nodiscard]] constexpr const mat3<T>& inverse_block(std::size_t i) const noexcept { return rows[i].inverse; }
     [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> = {}) const noexcept {
-        const contact_row<T>& c = rows[i];
-        vec3<T> u = c.bias;
-        const auto add = [&](const row_side<T>& side, const T& sign) {
-            if (side.body == no_body) return;
-            const screw<T>& s = velocity_of_body[side.body];
-            const vec3<T> w{s[0], s[1], s[2]}, v{s[3], s[4], s[5]};
-            for (std::size_t k = 0; k < 3; ++k) u[k] += sign * (linear3::dot(side.moment[k], w) + linear3::dot(c.direction[k], v));
-        };
-        add(c.b, T(1));
-        add(c.a, T(-1));
-        return u;
+        return linear3::add(rows[i].bias, row_velocity(rows[i], std::span<const screw<T>>(velocity_of_body)));
     }
     constexpr void apply(std::size_t i, const vec3<T>& dr) const noexcept {
         const contact_row<T>& c = rows[i];

@@ -475,7 +475,7 @@ public:
             row.inverse = linear3::inverse_symmetric(row.block);
             row.bias = {}, row.mu = T(0), row.bilateral = true;
             joint_error_[j] = linear3::sub(pb, pa);
-            joint_before_[j] = row_velocity(row, before_);
+            joint_before_[j] = constraints::row_velocity(row, bodies(before_));
             mu_[j] = T(0);
         });
         for (std::size_t j = 0; j < joints_count_; ++j) worst = std::max(worst, math::sqrt(linear3::dot(joint_error_[j], joint_error_[j])));
@@ -500,7 +500,7 @@ public:
                 row.block = constraints::delassus_block<T>(row, mobility_);
                 row.mu = mu, row.bilateral = false;
                 // u⁻ and u_free along n
-                const T before = normal_speed(row, before_), free = normal_speed(row, velocity_);
+                const T before = constraints::row_velocity(row, bodies(before_))[0], free = constraints::row_velocity(row, bodies(velocity_))[0];
                 const T phi = cp.separation;
                 const bool closing = phi + h * (before + free) / T(2) <= T(0);
                 row.bias = {};
@@ -612,14 +612,14 @@ public:
             bool needed = false;
             if (c < joints_count_) {
                 // the joint's gap at the step's end, φ⁺ = φ + h (u⁻ + u⁺)/2 on each axis, all of it removed
-                const vec3<T> after = row_velocity(rows_[c], velocity_);
+                const vec3<T> after = constraints::row_velocity(rows_[c], bodies(velocity_));
                 for (std::size_t k = 0; k < 3; ++k) {
                     const T gap = joint_error_[c][k] + h * (joint_before_[c][k] + after[k]) / T(2);
                     rows_[c].bias[k] = gap / h;  // the pseudo-velocities add no energy
                     needed = needed || gap != T(0);  // a joint has no slop
                 }
             } else {
-                const T after = normal_speed(rows_[c], velocity_);
+                const T after = constraints::row_velocity(rows_[c], bodies(velocity_))[0];
                 const T gap = separation_[c] + h * (before_normal_[c] + after) / T(2) + settings_.slop;
                 rows_[c].bias[0] = gap < T(0) ? settings_.correction * gap / h : gap / h;
                 needed = gap < T(0);
@@ -813,21 +813,7 @@ private:
         if (joined_count_ == 0) return false;
         return std::binary_search(joined_.data(), joined_.data() + joined_count_, pair_key(a, b));
     }
-    // The three rows' velocities J s (no offsets).
-    static vec3<T> row_velocity(const constraints::contact_row<T>& row, const std::pmr::vector<screw<T>>& s) noexcept {
-        vec3<T> u{};
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (row.b.body != constraints::no_body) u[k] += constraints::pair(constraints::line(row, row.b, k), s[row.b.body]);
-            if (row.a.body != constraints::no_body) u[k] -= constraints::pair(constraints::line(row, row.a, k), s[row.a.body]);
-        }
-        return u;
-    }
-    static T normal_speed(const constraints::contact_row<T>& row, const std::pmr::vector<screw<T>>& s) noexcept {
-        T u = T(0);
-        if (row.b.body != constraints::no_body) u += constraints::pair(constraints::line(row, row.b, 0), s[row.b.body]);
-        if (row.a.body != constraints::no_body) u -= constraints::pair(constraints::line(row, row.a, 0), s[row.a.body]);
-        return u;
-    }
+    std::span<const screw<T>> bodies(const std::pmr::vector<screw<T>>& s) const noexcept { return {s.data(), total_}; }
     // Contact c's point in its body a's frame (at the step's start pose).
     vec3<T> local_point(std::size_t c) const noexcept {
         const constraints::contact_row<T>& row = rows_[c];

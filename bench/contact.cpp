@@ -15,6 +15,16 @@
 // natural-map residual and a budget of sweeps); the work–precision rows <scene>_work/ctga_<n>
 // give it a budget of n sweeps.
 //
+// Work–precision (one figure, docs/img/contact_work_precision.svg), error against time per step:
+//   pyramid_work   the same pyramid with a base of 20 (210 cubes) for 60 s (3,600 steps): the top
+//                  cube's drift; ctga_tol_<t> at tolerance t (sweeps until it holds), ctga_<n> at
+//                  n sweeps, bullet_<n> at n iterations, mujoco_<n> at n iterations
+//   pinch_work     a 10 cm cube (density 500) held between two fingers (4 × 10 × 10 cm, density
+//                  1000) pressing with 10 N, μ = 0.5, no ground, gravity 10 along −z, 1 kHz, 2 s:
+//                  the box's mean slip speed against the fingers (it must not slip: μF > mg/2)
+// The peers' friction is set so that their rule of combining two gives μ (Bullet multiplies,
+// MuJoCo takes the larger).
+//
 //   ctga_contact_bench --benchmark_filter=joint_grid
 #include <algorithm>
 #include <chrono>
@@ -51,9 +61,15 @@ constexpr int pyramid_base = 100, pyramid_steps = 200;
 constexpr int grid_size = 100, grid_steps = 100;
 constexpr double cube_half = 0.5, cube_density = 100.0, friction = 0.6;
 constexpr double sphere_radius = 0.4, sphere_density = 1.0;
+constexpr int small_base = 20, small_steps = 3600;
+// the pinch: the box's and a finger's half extents, where the fingers are, their push, the steps
+constexpr double pinch_box = 0.05, pinch_finger = 0.02, pinch_at = 0.07, pinch_force = 10.0, pinch_mu = 0.5;
+constexpr double pinch_box_density = 500.0, pinch_finger_density = 1000.0;
+constexpr double pinch_h = 1e-3;  // a grasp's step, as robotics users run MuJoCo (60 Hz: every peer flew apart)
+constexpr int pinch_steps = 2000;
 
 struct scene_result {
-    double ms_per_step = 0, drift = 0, penetration = 0, joint_error = 0;
+    double ms_per_step = 0, drift = 0, penetration = 0, joint_error = 0, slip = 0, residual = 0;
 };
 
 void report(benchmark::State& state, const scene_result& r) {
@@ -61,11 +77,24 @@ void report(benchmark::State& state, const scene_result& r) {
     state.counters["drift"] = r.drift;
     state.counters["penetration"] = r.penetration;
     state.counters["joint_error"] = r.joint_error;
+    state.counters["slip"] = r.slip;
+    state.counters["residual"] = r.residual;
 }
 
-// cube j of row i of the pyramid
-ctga::vec3<double> pyramid_cube(int i, int j) {
-    return {(i + 1) * cube_half + 2 * (j - i) * cube_half - pyramid_base * cube_half, (2 * i + 1) * cube_half, 0.0};
+// cube j of row i of a pyramid of the given base
+ctga::vec3<double> pyramid_cube(int i, int j, int base = pyramid_base) {
+    return {(i + 1) * cube_half + 2 * (j - i) * cube_half - base * cube_half, (2 * i + 1) * cube_half, 0.0};
+}
+
+// the fingers' push and the torque that holds each level against the friction at its face, for
+// the box's weight shared by the two: a finger of side s (−1, +1) at a, the other at b
+struct pinch_push {
+    ctga::vec3<double> force, torque;
+};
+pinch_push pinch_wrench(double side, const ctga::vec3<double>& a, const ctga::vec3<double>& b, double box_mass, double finger_mass) {
+    ctga::vec3<double> d = ctga::linear3::sub(b, a);
+    d = ctga::linear3::scale(pinch_force / std::sqrt(ctga::linear3::dot(d, d)), d);
+    return {{d[0], d[1], d[2] + (finger_mass + box_mass / 2) * gravity}, {0.0, side * pinch_finger * box_mass * gravity / 2, 0.0}};
 }
 
 template <class Run>
@@ -81,33 +110,37 @@ scene_result timed(int steps, Run&& run) {
 
 using cube = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::diagonal, collision::box<double>>;
 using ball = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::sphere, collision::sphere<double>>;
+using spherical = ctga::spherical_joint<double>;
 
-ctga::world_settings<double> ctga_settings(std::size_t sweeps, std::size_t threads = 1) {
+ctga::world_settings<double> ctga_settings(std::size_t sweeps, std::size_t threads = 1, double tolerance = 1e-6) {
     ctga::world_settings<double> s;
     s.threads = threads;
     s.partitions = threads;  // one part per thread (one thread and two parts give the same numbers as two threads)
     s.gravity = {0.0, -gravity, 0.0};
-    s.solver.tolerance = 1e-6;
+    s.solver.tolerance = tolerance;
     s.solver.max_sweeps = sweeps;
     s.solver.check_every = 4;
     return s;
 }
 
-scene_result ctga_pyramid(std::size_t sweeps, std::size_t threads = 1) {
-    constexpr std::size_t n = pyramid_base * (pyramid_base + 1) / 2;
+scene_result ctga_pyramid(std::size_t sweeps, std::size_t threads = 1, int base = pyramid_base, int steps = pyramid_steps,
+                          double tolerance = 1e-6) {
+    const std::size_t n = static_cast<std::size_t>(base * (base + 1) / 2);
     auto w = std::make_unique<ctga::physics_world<double, collision::box<double>, cube>>(
-        std::array<std::size_t, 1>{n}, ctga::world_capacity{.statics = 1, .contacts = 16 * n, .pairs = 8 * n}, ctga_settings(sweeps, threads));
+        std::array<std::size_t, 1>{n}, ctga::world_capacity{.statics = 1, .contacts = 16 * n, .pairs = 8 * n},
+        ctga_settings(sweeps, threads, tolerance));
     w->add_static(*collision::make_box(400.0, 1.0, 400.0), motor<double>(ctga::make_translator(0.0, -1.0, 0.0)), {friction, 0.0});
     const auto box = *collision::make_box(cube_half, cube_half, cube_half);
-    for (int i = 0; i < pyramid_base; ++i)
-        for (int j = i; j < pyramid_base; ++j) {
-            const ctga::vec3<double> c = pyramid_cube(i, j);
+    for (int i = 0; i < base; ++i)
+        for (int j = i; j < base; ++j) {
+            const ctga::vec3<double> c = pyramid_cube(i, j, base);
             w->add_body<0>(box, cube_density, motor<double>(ctga::make_translator(c[0], c[1], c[2])), {friction, 0.0});
         }
-    const ctga::vec3<double> top = pyramid_cube(pyramid_base - 1, pyramid_base - 1);
-    scene_result r = timed(pyramid_steps, [&](scene_result& out) {
+    const ctga::vec3<double> top = pyramid_cube(base - 1, base - 1, base);
+    scene_result r = timed(steps, [&](scene_result& out) {
         const ctga::step_report<double> s = w->step(h);
         out.penetration = std::max(out.penetration, s.penetration);
+        out.residual = std::max(out.residual, s.contact.residual);
     });
     const ctga::vec3<double> d = ctga::linear3::sub(ctga::map_of(w->pose<0>(n - 1)).t, top);
     r.drift = std::sqrt(ctga::linear3::dot(d, d));
@@ -128,14 +161,42 @@ scene_result ctga_grid(std::size_t sweeps, std::size_t threads = 1) {
             w->add_body<0>(sphere, sphere_density, motor<double>(ctga::make_translator(double(k), double(-i), 0.0)), {}, {}, none);
     for (int i = 1; i < grid_size; ++i)
         for (int k = 0; k < grid_size; ++k) {
-            if (i == 1) w->add_joint({ctga::body<0>(id(i, k)), ctga::ground, {0.0, 0.5, 0.0}, {double(k), -0.5, 0.0}});
-            else w->add_joint({ctga::body<0>(id(i, k)), ctga::body<0>(id(i - 1, k)), {0.0, 0.5, 0.0}, {0.0, -0.5, 0.0}});
-            if (k > 0) w->add_joint({ctga::body<0>(id(i, k)), ctga::body<0>(id(i, k - 1)), {-0.5, 0.0, 0.0}, {0.5, 0.0, 0.0}});
+            if (i == 1) w->add_joint(spherical{ctga::body<0>(id(i, k)), ctga::ground, {0.0, 0.5, 0.0}, {double(k), -0.5, 0.0}});
+            else w->add_joint(spherical{ctga::body<0>(id(i, k)), ctga::body<0>(id(i - 1, k)), {0.0, 0.5, 0.0}, {0.0, -0.5, 0.0}});
+            if (k > 0) w->add_joint(spherical{ctga::body<0>(id(i, k)), ctga::body<0>(id(i, k - 1)), {-0.5, 0.0, 0.0}, {0.5, 0.0, 0.0}});
         }
     return timed(grid_steps, [&](scene_result& out) {
         const ctga::step_report<double> s = w->step(h);
         out.joint_error = std::max(out.joint_error, s.joint_error);
     });
+}
+
+// the box (body 0) between the fingers (1 and 2), with no ground
+scene_result ctga_pinch(double tolerance) {
+    ctga::world_settings<double> set;
+    set.gravity = {0.0, 0.0, -gravity};
+    set.solver.tolerance = tolerance;
+    set.solver.max_sweeps = 100000;
+    ctga::physics_world<double, collision::box<double>, cube> w({3}, {.statics = 0, .contacts = 32, .pairs = 8}, set);
+    w.add_body<0>(*collision::make_box(pinch_box, pinch_box, pinch_box), pinch_box_density, motor<double>(ctga::make_translator(0.0, 0.0, 1.0)),
+                  {pinch_mu, 0.0});
+    for (const double side : {-1.0, 1.0})
+        w.add_body<0>(*collision::make_box(pinch_finger, pinch_box, pinch_box), pinch_finger_density,
+                      motor<double>(ctga::make_translator(side * pinch_at, 0.0, 1.0)), {pinch_mu, 0.0});
+    const double mb = w.body<0>(0).m(), mf = w.body<0>(1).m();
+    double slip = 0;
+    scene_result r = timed(pinch_steps, [&](scene_result& out) {
+        const ctga::vec3<double> a = ctga::map_of(w.pose<0>(1)).t, b = ctga::map_of(w.pose<0>(2)).t;
+        const pinch_push left = pinch_wrench(-1.0, a, b, mb, mf), right = pinch_wrench(1.0, b, a, mb, mf);
+        w.set_wrench<0>(1, left.force, left.torque);
+        w.set_wrench<0>(2, right.force, right.torque);
+        const ctga::step_report<double> s = w.step(pinch_h);
+        out.residual = std::max(out.residual, s.contact.residual);
+        out.penetration = std::max(out.penetration, s.penetration);
+        slip += std::abs(w.velocity<0>(0)[5] - (w.velocity<0>(1)[5] + w.velocity<0>(2)[5]) / 2);
+    });
+    r.slip = slip / pinch_steps;
+    return r;
 }
 
 // ---- Bullet ----------------------------------------------------------------------------------
@@ -152,11 +213,15 @@ struct bullet_world {
     std::vector<std::unique_ptr<btRigidBody>> bodies;
     std::vector<std::unique_ptr<btTypedConstraint>> joints;
 
-    bullet_world() { world.setGravity(btVector3(0, -gravity, 0)); }
+    explicit bullet_world(int iterations = 10, const btVector3& g = btVector3(0, -gravity, 0)) {
+        world.setGravity(g);
+        world.getSolverInfo().m_numIterations = iterations;
+    }
     ~bullet_world() {
         for (auto& j : joints) world.removeConstraint(j.get());
         for (auto& b : bodies) world.removeRigidBody(b.get());
     }
+    // (Bullet's friction between two bodies is the product of theirs: each is given √μ)
     btRigidBody* add(btCollisionShape* shape, double mass, const btVector3& at, double mu, int group = 1, int mask = -1) {
         btTransform p;
         p.setIdentity();
@@ -165,7 +230,7 @@ struct bullet_world {
         if (mass > 0) shape->calculateLocalInertia(mass, inertia);
         states.push_back(std::make_unique<btDefaultMotionState>(p));
         btRigidBody::btRigidBodyConstructionInfo info(mass, states.back().get(), shape, inertia);
-        info.m_friction = mu;
+        info.m_friction = std::sqrt(mu);
         bodies.push_back(std::make_unique<btRigidBody>(info));
         bodies.back()->setActivationState(DISABLE_DEACTIVATION);
         world.addRigidBody(bodies.back().get(), group, mask);
@@ -181,20 +246,20 @@ struct bullet_world {
     }
 };
 
-scene_result bullet_pyramid() {
-    bullet_world b;
+scene_result bullet_pyramid(int base = pyramid_base, int steps = pyramid_steps, int iterations = 10) {
+    bullet_world b(iterations);
     b.shapes.push_back(std::make_unique<btBoxShape>(btVector3(400, 1, 400)));
     b.add(b.shapes.back().get(), 0.0, btVector3(0, -1, 0), friction);
     b.shapes.push_back(std::make_unique<btBoxShape>(btVector3(cube_half, cube_half, cube_half)));
     const double mass = cube_density * 8 * cube_half * cube_half * cube_half;
     btRigidBody* top = nullptr;
-    for (int i = 0; i < pyramid_base; ++i)
-        for (int j = i; j < pyramid_base; ++j) {
-            const ctga::vec3<double> c = pyramid_cube(i, j);
+    for (int i = 0; i < base; ++i)
+        for (int j = i; j < base; ++j) {
+            const ctga::vec3<double> c = pyramid_cube(i, j, base);
             top = b.add(b.shapes.back().get(), mass, btVector3(c[0], c[1], c[2]), friction);
         }
     const btVector3 start = top->getWorldTransform().getOrigin();
-    scene_result r = timed(pyramid_steps, [&](scene_result& out) {
+    scene_result r = timed(steps, [&](scene_result& out) {
         b.world.stepSimulation(h, 0, h);
         out.penetration = std::max(out.penetration, b.penetration());
     });
@@ -229,11 +294,46 @@ scene_result bullet_grid() {
             }
     });
 }
+
+scene_result bullet_pinch(int iterations) {
+    bullet_world b(iterations, btVector3(0, 0, -gravity));
+    b.shapes.push_back(std::make_unique<btBoxShape>(btVector3(pinch_box, pinch_box, pinch_box)));
+    b.shapes.push_back(std::make_unique<btBoxShape>(btVector3(pinch_finger, pinch_box, pinch_box)));
+    for (auto& shape : b.shapes) shape->setMargin(0.001);  // (its default, 4 cm, is more than a finger's half width)
+    const double mb = pinch_box_density * 8 * pinch_box * pinch_box * pinch_box, mf = pinch_finger_density * 8 * pinch_finger * pinch_box * pinch_box;
+    btRigidBody* box = b.add(b.shapes[0].get(), mb, btVector3(0, 0, 1), pinch_mu);
+    btRigidBody* left = b.add(b.shapes[1].get(), mf, btVector3(-pinch_at, 0, 1), pinch_mu);
+    btRigidBody* right = b.add(b.shapes[1].get(), mf, btVector3(pinch_at, 0, 1), pinch_mu);
+    const auto at = [](btRigidBody* x) {
+        const btVector3 p = x->getWorldTransform().getOrigin();
+        return ctga::vec3<double>{p.x(), p.y(), p.z()};
+    };
+    const auto push = [](btRigidBody* x, const pinch_push& p) {
+        x->applyCentralForce(btVector3(p.force[0], p.force[1], p.force[2]));
+        x->applyTorque(btVector3(p.torque[0], p.torque[1], p.torque[2]));
+    };
+    double slip = 0;
+    scene_result r = timed(pinch_steps, [&](scene_result& out) {
+        push(left, pinch_wrench(-1.0, at(left), at(right), mb, mf));
+        push(right, pinch_wrench(1.0, at(right), at(left), mb, mf));
+        b.world.stepSimulation(pinch_h, 0, pinch_h);  // (which clears the forces)
+        out.penetration = std::max(out.penetration, b.penetration());
+        slip += std::abs(box->getLinearVelocity().z() - (left->getLinearVelocity().z() + right->getLinearVelocity().z()) / 2);
+    });
+    r.slip = slip / pinch_steps;
+    return r;
+}
 #endif
 
 #ifdef CTGA_BENCH_MUJOCO
 // room for the scenes' constraints (MuJoCo 2.2's defaults hold a few thousand)
 constexpr const char* size_for_scenes = "<size njmax='400000' nconmax='200000' nstack='60000000'/>";
+// room for a pyramid of n cubes: about 12 contact points a cube, 4 rows each with pyramidal cones,
+// and a stack for the dense Jacobian (rows × nv numbers) several times over
+std::string size_for_pyramid(int n) {
+    const long rows = 48L * n, nv = 6L * n;
+    return "<size njmax='" + std::to_string(rows) + "' nconmax='" + std::to_string(12L * n) + "' nstack='" + std::to_string(4 * rows * nv) + "'/>";
+}
 
 // MuJoCo 2.2.2 allocates its constraint Jacobian densely, njmax × nv numbers (mjdata.h: efc_J):
 // the gigabytes a scene of nv degrees of freedom and `rows` constraint rows needs.
@@ -263,14 +363,14 @@ struct mujoco_scene {
 };
 
 // free cubes on a ground box; the geoms' friction 0.6 (MuJoCo takes the larger of two), density 100
-scene_result mujoco_pyramid() {
+scene_result mujoco_pyramid(int base = pyramid_base, int steps = pyramid_steps, int iterations = 100) {
     std::ostringstream x;
-    x << "<mujoco><option timestep='" << h << "' gravity='0 " << -gravity << " 0'/>" << size_for_scenes
+    x << "<mujoco><option timestep='" << h << "' iterations='" << iterations << "' gravity='0 " << -gravity << " 0'/>" << size_for_pyramid(base * (base + 1) / 2)
       << "<default><geom friction='" << friction << " 0.005 0.0001' density='" << cube_density << "'/></default><worldbody>"
       << "<geom type='box' size='400 1 400' pos='0 -1 0'/>";
-    for (int i = 0; i < pyramid_base; ++i)
-        for (int j = i; j < pyramid_base; ++j) {
-            const ctga::vec3<double> c = pyramid_cube(i, j);
+    for (int i = 0; i < base; ++i)
+        for (int j = i; j < base; ++j) {
+            const ctga::vec3<double> c = pyramid_cube(i, j, base);
             x << "<body pos='" << c[0] << ' ' << c[1] << ' ' << c[2] << "'><freejoint/><geom type='box' size='" << cube_half << ' ' << cube_half
               << ' ' << cube_half << "'/></body>";
         }
@@ -279,13 +379,43 @@ scene_result mujoco_pyramid() {
     const int top = s.m->nbody - 1;
     mj_forward(s.m, s.d);
     const ctga::vec3<double> start{s.d->xpos[3 * top], s.d->xpos[3 * top + 1], s.d->xpos[3 * top + 2]};
-    scene_result r = timed(pyramid_steps, [&](scene_result& out) {
+    scene_result r = timed(steps, [&](scene_result& out) {
         mj_step(s.m, s.d);
         out.penetration = std::max(out.penetration, s.penetration());
     });
     const ctga::vec3<double> end{s.d->xpos[3 * top], s.d->xpos[3 * top + 1], s.d->xpos[3 * top + 2]};
     const ctga::vec3<double> d = ctga::linear3::sub(end, start);
     r.drift = std::sqrt(ctga::linear3::dot(d, d));
+    return r;
+}
+
+// the box (body 1) and the fingers (2, 3) free, no ground; the push as xfrc_applied
+scene_result mujoco_pinch(int iterations) {
+    std::ostringstream x;
+    x << "<mujoco><option timestep='" << pinch_h << "' iterations='" << iterations << "' gravity='0 0 " << -gravity << "'/><default><geom friction='"
+      << pinch_mu << " 0.005 0.0001'/></default><worldbody>"
+      << "<body pos='0 0 1'><freejoint/><geom type='box' density='" << pinch_box_density << "' size='" << pinch_box << ' ' << pinch_box << ' '
+      << pinch_box << "'/></body>";
+    for (const double side : {-1.0, 1.0})
+        x << "<body pos='" << side * pinch_at << " 0 1'><freejoint/><geom type='box' density='" << pinch_finger_density << "' size='"
+          << pinch_finger << ' ' << pinch_box << ' ' << pinch_box << "'/></body>";
+    x << "</worldbody></mujoco>";
+    mujoco_scene s(x.str());
+    const double mb = s.m->body_mass[1], mf = s.m->body_mass[2];
+    const auto at = [&](int body) { return ctga::vec3<double>{s.d->xpos[3 * body], s.d->xpos[3 * body + 1], s.d->xpos[3 * body + 2]}; };
+    const auto push = [&](int body, const pinch_push& p) {
+        for (int k = 0; k < 3; ++k) s.d->xfrc_applied[6 * body + k] = p.force[k], s.d->xfrc_applied[6 * body + 3 + k] = p.torque[k];
+    };
+    mj_forward(s.m, s.d);
+    double slip = 0;
+    scene_result r = timed(pinch_steps, [&](scene_result& out) {
+        push(2, pinch_wrench(-1.0, at(2), at(3), mb, mf));
+        push(3, pinch_wrench(1.0, at(3), at(2), mb, mf));
+        mj_step(s.m, s.d);
+        out.penetration = std::max(out.penetration, s.penetration());
+        slip += std::abs(s.d->qvel[2] - (s.d->qvel[8] + s.d->qvel[14]) / 2);  // (a free joint's linear velocity first)
+    });
+    r.slip = slip / pinch_steps;
     return r;
 }
 
@@ -367,9 +497,20 @@ void register_all() {
     add("joint_grid/ctga_2threads", [] { return ctga_grid(100, 2); });
     for (const std::size_t sweeps : {4, 10, 30})
         add("joint_grid_work/ctga_" + std::to_string(sweeps), [sweeps] { return ctga_grid(sweeps); });
+    // work–precision (tolerances as the residual's exponent: ctga_tol_3 is 1e-3)
+    for (const int e : {2, 3, 4})
+        add("pyramid_work/ctga_tol_" + std::to_string(e), [e] { return ctga_pyramid(100000, 1, small_base, small_steps, std::pow(10.0, -e)); });
+    for (const std::size_t sweeps : {10, 100})
+        add("pyramid_work/ctga_" + std::to_string(sweeps), [sweeps] { return ctga_pyramid(sweeps, 1, small_base, small_steps); });
+    for (const int e : {2, 4, 6, 10})
+        add("pinch_work/ctga_tol_" + std::to_string(e), [e] { return ctga_pinch(std::pow(10.0, -e)); });
 #ifdef CTGA_BENCH_BULLET
-    add("large_pyramid/bullet", bullet_pyramid);
+    add("large_pyramid/bullet", [] { return bullet_pyramid(); });
     add("joint_grid/bullet", bullet_grid);
+    for (const int n : {10, 30, 100}) {
+        add("pyramid_work/bullet_" + std::to_string(n), [n] { return bullet_pyramid(small_base, small_steps, n); });
+        add("pinch_work/bullet_" + std::to_string(n), [n] { return bullet_pinch(n); });
+    }
 #endif
 #ifdef CTGA_BENCH_MUJOCO
     // (rows: the grid's 3 per joint; the pyramid's about 12 contact points per cube, 4 rows each with pyramidal cones)
@@ -379,8 +520,13 @@ void register_all() {
             ->Iterations(1)
             ->UseRealTime();
     };
-    add_mujoco("large_pyramid/mujoco", 6.0 * pyramid_base * (pyramid_base + 1) / 2, 48.0 * pyramid_base * (pyramid_base + 1) / 2, mujoco_pyramid);
+    add_mujoco("large_pyramid/mujoco", 6.0 * pyramid_base * (pyramid_base + 1) / 2, 48.0 * pyramid_base * (pyramid_base + 1) / 2,
+               [] { return mujoco_pyramid(); });
     add_mujoco("joint_grid/mujoco", 6.0 * (grid_size - 1) * grid_size, 6.0 * (grid_size - 1) * grid_size, mujoco_grid);
+    for (const int n : {1, 100}) {  // (100: its default; a row of the pyramid takes MuJoCo about nine minutes)
+        add("pyramid_work/mujoco_" + std::to_string(n), [n] { return mujoco_pyramid(small_base, small_steps, n); });
+        add("pinch_work/mujoco_" + std::to_string(n), [n] { return mujoco_pinch(n); });
+    }
 #endif
 }
 

@@ -10,7 +10,7 @@ CHAINS.json, SCALING.json: ctga_chains_bench and ctga_chains_scaling_* runs (kin
 CHAINS_INSTRUCTIONS.txt: "algorithm_tree implementation instructions" lines; SCALING.svg the plot.
 collision.json beside RESULTS.json (a ctga_collision_bench run, tools/bench.sh), when it exists: the
 collision tables (collision_<pair>/<implementation>, contact_<pair>/<implementation> rows); contact.json
-(ctga_contact_bench): the scenes' table.
+(ctga_contact_bench): the scenes' tables and the work–precision figure (img/contact_work_precision.svg beside OUT.svg).
 
     render_benchmarks.py --collision COLLISION.json OUT.md
 rewrites only the collision section of OUT.md from a ctga_collision_bench run (--contact CONTACT.json:
@@ -367,7 +367,7 @@ def collision_section(collision_json):
     return out + [""]
 
 
-def contact_section(contact_json):
+def contact_section(contact_json, img_dir):
     """Scenes of bodies that touch (bench/contact.cpp): ms per step and each scene's accuracy, one run."""
     with open(contact_json) as f:
         data = json.load(f)
@@ -387,6 +387,7 @@ def contact_section(contact_json):
     def figure(x):  # a scene without that measure shows a dash
         return f"{x:.3g}" if x else "—"
 
+    precision = {scene: rows.pop(scene) for scene in WORK_PRECISION if scene in rows}
     for scene, entries in rows.items():
         bullet = bullet_of(scene)
         out += [f"**{scene}**", "", "| implementation | ms/step | / Bullet | drift (m) | penetration (m) | joint gap (m) |",
@@ -399,7 +400,61 @@ def contact_section(contact_json):
             rel = f"{ms / bullet:.2f}" if bullet else ""
             out.append(f"| {impl} | {ms:.1f} | {rel} | {figure(b['drift'])} | {figure(b['penetration'])} | {figure(b['joint_error'])} |")
         out.append("")
+    if precision:
+        out += work_precision(precision, img_dir)
     return out
+
+
+# the work–precision scenes: (error counter, its name in the table, the unit of time per step)
+WORK_PRECISION = {"pyramid_work": ("drift", "top cube's drift after 60 s (m)", "ms", 1.0),
+                  "pinch_work": ("slip", "mean slip (m/s)", "µs", 1e3)}
+
+
+def work_precision(precision, img_dir):
+    """Error against time per step (pyramid_work, pinch_work): a table each and one figure, two panels."""
+    out = ["### Work–precision", "",
+           "Error against time per step. `pyramid_work`: the pyramid with a base of 20 (210 cubes) for 60 s at 60 Hz,",
+           "the top cube's drift; `pinch_work`: a 10 cm cube held between two fingers pressing with 10 N (μ = 0.5: it",
+           "must not slip) for 2 s at 1 kHz, its mean slip speed. ctga at a tolerance on the natural-map residual",
+           "(`ctga_tol_<e>`: 1e-e, sweeps until it holds) or at n sweeps (`ctga_<n>`); Bullet and MuJoCo at n iterations",
+           "(MuJoCo's default is 100, Bullet's 10). residual: the largest ctga reported in a step.", "",
+           f"![work-precision: error against time per step](img/{os.path.basename(WORK_PRECISION_SVG)})", ""]
+    fig, axes = plt.subplots(1, len(precision), figsize=(6 * len(precision), 4.5))
+    axes = axes if len(precision) > 1 else [axes]
+    for ax, (scene, entries) in zip(axes, precision.items()):
+        counter, label, unit, scale = WORK_PRECISION[scene]
+        out += [f"**{scene}**", "", f"| implementation | {unit}/step | {label} | penetration (m) | residual |",
+                "| --- | ---: | ---: | ---: | ---: |"]
+        series = {}
+        for impl, b in entries:
+            if b.get("error_occurred"):
+                out.append(f"| {impl} | {b.get('error_message', 'not run')} | | | |")
+                continue
+            t = b["ms_per_step"] * scale
+            residual = f"{b['residual']:.2g}" if impl.startswith("ctga") else "—"
+            out.append(f"| {impl} | {t:.3g} | {b[counter]:.2g} | {b['penetration']:.2g} | {residual} |")
+            family, _, knob = impl.rpartition("_")
+            series.setdefault(family, []).append((t, max(b[counter], 1e-18), knob))
+        out.append("")
+        for family, points in series.items():
+            points.sort()
+            ax.plot([p[0] for p in points], [p[1] for p in points], "o-", label=family)
+            for t, e, knob in points:
+                ax.annotate(knob, (t, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel(f"time per step ({unit})")
+        ax.set_ylabel(label)
+        ax.set_title(scene)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(os.path.join(img_dir, os.path.basename(WORK_PRECISION_SVG)))
+    plt.close(fig)
+    return out
+
+
+WORK_PRECISION_SVG = "contact_work_precision.svg"
 
 
 def replace_section(title, new, out_md):
@@ -432,7 +487,8 @@ def main():
         replace_section("Collision", collision_section(sys.argv[2]), sys.argv[3])
         return
     if sys.argv[1] == "--contact":
-        replace_section("Scenes with contact", contact_section(sys.argv[2]), sys.argv[3])
+        out_md = sys.argv[3]
+        replace_section("Scenes with contact", contact_section(sys.argv[2], os.path.join(os.path.dirname(os.path.abspath(out_md)), "img")), out_md)
         return
     results, instr_path, compile_md, out_md, out_svg = sys.argv[1:6]
     context, t = medians(results)
@@ -541,7 +597,7 @@ def main():
         lines += collision_section(collision_json)
     contact_json = os.path.join(os.path.dirname(os.path.abspath(results)), "contact.json")
     if os.path.exists(contact_json):
-        lines += contact_section(contact_json)
+        lines += contact_section(contact_json, os.path.dirname(os.path.abspath(out_svg)))
     if os.path.exists(compile_md):
         with open(compile_md) as f:
             lines += ["## Compile time", "", f.read().strip(), ""]

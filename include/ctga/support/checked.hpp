@@ -43,7 +43,7 @@ enum class error_code : unsigned char {
     limits_reversed,        // a joint limit with lower > upper
     negative_limit,         // a velocity or effort limit, a damping or a friction below zero
     unbounded,              // a bound needed (random_configuration) is infinite
-    non_positive_size,      // a shape's radius, half extent or half height ≤ 0 (collision/)
+    non_positive_size,      // a shape's radius, half extent or half height ≤ 0 (collision/); a distance joint's length
     too_few_points,         // a convex hull of fewer than four points
     coplanar_points,        // a convex hull of points on one plane (no volume)
     degenerate_triangle,    // a mesh triangle of zero area (two vertices equal, or on a line)

@@ -180,3 +180,97 @@ TEST_CASE("constraints: float, and bad input refused before any sweep") {
     CHECK(cn::solve_contacts(Dn, std::span<const double>(fine), std::span<double>(rd)).error == ctga::error_code::non_finite);
     CHECK((rd[0] == 0 && rd[1] == 0 && rd[2] == 0));  // left as given
 }
+
+namespace {
+// A dense problem whose blocks are all bounded (a joint's limits and motor): each row's impulse
+// in an interval.
+struct bounded_dense : cn::dense_delassus<double> {
+    std::vector<std::array<vec3<double>, 2>> limits;
+    [[nodiscard]] bool bounded(std::size_t) const noexcept { return true; }
+    [[nodiscard]] std::array<vec3<double>, 2> bounds(std::size_t i) const noexcept { return limits[i]; }
+};
+}  // namespace
+
+TEST_CASE("contact problem: bounded rows (limits, motors) against every active set") {
+    // one block of three rows, u = A r + q, lower ≤ r ≤ upper: the solution is the one choice,
+    // among the 27 of each row at its lower bound, at its upper or free (u = 0 there), whose r
+    // is within the bounds and whose u has the right sign where a bound holds (A is positive
+    // definite, so there is exactly one); found here by trying them all, with Cramer's rule
+    std::mt19937 rng(44);
+    std::uniform_real_distribution<double> U(-1.0, 1.0);
+    const double inf = std::numeric_limits<double>::infinity();
+    for (int trial = 0; trial < 60; ++trial) {
+        mat3<double> B{};
+        for (auto& row : B)
+            for (double& x : row) x = U(rng);
+        mat3<double> A{};
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j) {
+                for (std::size_t k = 0; k < 3; ++k) A[i][j] += B[i][k] * B[j][k];
+                A[i][j] += i == j ? 0.2 : 0.0;
+            }
+        const vec3<double> q{U(rng), U(rng), U(rng)};
+        // a limit [0, ∞), a motor's [−b, b], a row held at zero
+        const std::array<vec3<double>, 2> box{vec3<double>{0.0, -0.3 * std::abs(U(rng)), 0.0}, vec3<double>{inf, 0.3 * std::abs(U(rng)), 0.0}};
+        vec3<double> expected{};
+        int found = 0;
+        for (int choice = 0; choice < 27; ++choice) {
+            std::array<int, 3> at{choice % 3, choice / 3 % 3, choice / 9};  // 0 lower, 1 upper, 2 free
+            bool usable = true;
+            for (std::size_t k = 0; k < 3; ++k) usable = usable && (at[k] == 2 || std::isfinite(box[at[k]][k]));
+            if (!usable) continue;
+            // the free rows solve A_ff r_f = −(q_f + A_fb r_b); the others sit at their bounds
+            vec3<double> r{};
+            for (std::size_t k = 0; k < 3; ++k) r[k] = at[k] == 2 ? 0.0 : box[at[k]][k];
+            mat3<double> M{};
+            vec3<double> rhs{};
+            for (std::size_t i = 0; i < 3; ++i) {
+                if (at[i] != 2) {
+                    M[i][i] = 1.0, rhs[i] = r[i];
+                    continue;
+                }
+                rhs[i] = -q[i];
+                for (std::size_t j = 0; j < 3; ++j) (at[j] == 2 ? M[i][j] : rhs[i]) += at[j] == 2 ? A[i][j] : -A[i][j] * r[j];
+            }
+            const auto det = [](const mat3<double>& m) {
+                return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                       m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+            };
+            const double d = det(M);
+            for (std::size_t k = 0; k < 3; ++k) {
+                mat3<double> Mk = M;
+                for (std::size_t i = 0; i < 3; ++i) Mk[i][k] = rhs[i];
+                r[k] = det(Mk) / d;
+            }
+            bool ok = true;
+            for (std::size_t k = 0; k < 3; ++k) {
+                double u = q[k];
+                for (std::size_t j = 0; j < 3; ++j) u += A[k][j] * r[j];
+                const double tol = 1e-12;
+                if (at[k] == 2) ok = ok && r[k] >= box[0][k] - tol && r[k] <= box[1][k] + tol;
+                else if (at[k] == 0) ok = ok && u >= -tol;
+                else ok = ok && u <= tol;
+            }
+            if (ok) expected = r, ++found;
+        }
+        REQUIRE(found >= 1);
+        std::vector<double> W(9), qs(q.begin(), q.end());
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j) W[3 * i + j] = A[i][j];
+        bounded_dense D{{W, qs}, {box}};
+        std::vector<double> r(3, 0.0), mu(1, 0.0);
+        cn::contact_settings<double> set;
+        set.tolerance = 1e-13;
+        set.max_sweeps = 100000;
+        const auto report = cn::solve_contacts<double>(D, std::span<const double>(mu), std::span<double>(r), set);
+        CHECK(report.converged);
+        for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(r[k] - expected[k]) <= 1e-9);
+        // Newton, from zero, with the block marked bounded
+        std::vector<double> rn(3, 0.0), scratch(cn::newton_scratch_size(1));
+        const std::array<unsigned char, 1> kind{cn::bounded_block};
+        const auto newton = cn::newton_polish<double>(W, qs, mu, std::span<double>(rn), std::span<double>(scratch), 1e-12, 60,
+                                                      std::span<const unsigned char>(kind), std::span<const std::array<vec3<double>, 2>>(&box, 1));
+        CHECK(newton.converged);
+        for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(rn[k] - expected[k]) <= 1e-9);
+    }
+}

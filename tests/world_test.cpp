@@ -317,6 +317,66 @@ TEST_CASE("world: revolute, prismatic, fixed and distance joints move as ABA, th
     }
 }
 
+TEST_CASE("world: a motor drives a joint at its effort up to its speed; limits stop a revolute and a prismatic joint") {
+    using ctga::vec3;
+    // a wheel (a box) on a revolute joint about z, gravity along the axis: the motor's torque τ
+    // turns it at τ / I_z until it reaches the speed, then holds it there
+    {
+        const auto wheel = *collision::make_box(0.3, 0.1, 0.05);
+        const double Iz = collision::mass_of(wheel, 500.0)->inertia_c[2][2], tau = 0.5, speed = 2.0;
+        ctga::physics_world<double, plane, cube> w({1}, {.statics = 0, .contacts = 4, .pairs = 4, .joints = 1});
+        w.settings().gravity = {0.0, 0.0, -g};
+        w.settings().solver.tolerance = 1e-12;
+        REQUIRE(w.add_body<0>(wheel, 500.0, motor<double>(ctga::make_translator(0.0, 0.0, 1.0))));
+        const vec3<double> z{0.0, 0.0, 1.0};
+        // (the joint's speed is b's relative to a's: the wheel is b)
+        REQUIRE(w.add_joint(ctga::revolute_joint<double>{ctga::ground, ctga::body<0>(0), {0.0, 0.0, 1.0}, {}, z, z, {}, {speed, tau}}));
+        for (int k = 1; k <= 120; ++k) {
+            REQUIRE(w.step(h).error == ctga::error_code::none);
+            const double t = k * h, reach = speed * Iz / tau;
+            if (std::abs(t - reach) > h) CHECK(std::abs(w.velocity<0>(0)[2] - (t < reach ? tau * t / Iz : speed)) <= 1e-9 * speed);
+        }
+    }
+    // a pendulum (a box 0.6 m from a hinge about y) let go level swings down until its angle
+    // reaches the upper limit of 0.5 rad and rests there
+    {
+        const double l = 0.6, upper = 0.5;
+        ctga::physics_world<double, plane, cube> w({1}, {.statics = 0, .contacts = 4, .pairs = 4, .joints = 1});
+        w.settings().gravity = {0.0, 0.0, -g};
+        w.settings().solver.tolerance = 1e-12;
+        REQUIRE(w.add_body<0>(*collision::make_box(0.1, 0.1, 0.1), 800.0, motor<double>(ctga::make_translator(l, 0.0, 1.0))));
+        const vec3<double> y{0.0, 1.0, 0.0};
+        REQUIRE(w.add_joint(ctga::revolute_joint<double>{ctga::ground, ctga::body<0>(0), {0.0, 0.0, 1.0}, {-l, 0.0, 0.0}, y, y, {-1.0, upper}}));
+        double furthest = 0, angle = 0;
+        for (int k = 0; k < 180; ++k) {
+            REQUIRE(w.step(h).error == ctga::error_code::none);
+            const vec3<double> c = centre(w.pose<0>(0));
+            angle = std::atan2(1.0 - c[2], c[0]);  // R_y(θ) takes x to (cos θ, 0, −sin θ)
+            furthest = std::max(furthest, angle);
+        }
+        CHECK(furthest <= upper + 1e-9);
+        CHECK(std::abs(angle - upper) <= 1e-6);
+        CHECK(std::abs(w.velocity<0>(0)[1]) <= 1e-9);
+    }
+    // a box on a vertical slide given from the ground's side (the joint turned around inside):
+    // it falls to the limit of 0.5 m and rests there
+    {
+        ctga::physics_world<double, plane, cube> w({1}, {.statics = 0, .contacts = 4, .pairs = 4, .joints = 1});
+        w.settings().gravity = {0.0, 0.0, -g};
+        w.settings().solver.tolerance = 1e-12;
+        REQUIRE(w.add_body<0>(*collision::make_box(0.1, 0.1, 0.1), 800.0, motor<double>(ctga::make_translator(0.0, 0.0, 2.0))));
+        REQUIRE(w.add_joint(ctga::prismatic_joint<double>{ctga::ground, ctga::body<0>(0), {0.0, 0.0, 2.0}, {}, {0.0, 0.0, -1.0}, {-1.0, 0.5}}));
+        double lowest = 2.0;
+        for (int k = 0; k < 120; ++k) {
+            REQUIRE(w.step(h).error == ctga::error_code::none);
+            lowest = std::min(lowest, centre(w.pose<0>(0))[2]);
+        }
+        CHECK(lowest >= 1.5 - 1e-9);
+        CHECK(std::abs(centre(w.pose<0>(0))[2] - 1.5) <= 1e-6);
+        CHECK(std::abs(w.velocity<0>(0)[5]) <= 1e-9);
+    }
+}
+
 TEST_CASE("world: a box dropped on a conveyor is carried up to the belt's speed at μ g") {
     // a unit cube at rest on a kinematic belt (a box shape moving at 2 m/s along x), μ = 0.5: friction
     // accelerates it at μ g until it moves with the belt, at t* = 2 / (μ g), then it rides along
@@ -465,9 +525,13 @@ TEST_CASE("world: bad input is refused, a step that goes non-finite keeps the la
         CHECK(jw.add_joint(ctga::revolute_joint<double>{ctga::body<0>(0), ctga::ground, o, o, x, o}).error == ctga::error_code::zero_direction);
         CHECK(jw.add_joint(ctga::prismatic_joint<double>{ctga::body<0>(0), ctga::ground, o, o, {nan, 0.0, 0.0}}).error == ctga::error_code::non_finite);
         CHECK(jw.add_joint(ctga::distance_joint<double>{ctga::body<0>(0), ctga::ground, o, x, 0.0}).error == ctga::error_code::non_positive_size);
-        // capacity: two joints are four blocks; a spherical joint and a fixed one fill three, a
-        // second fixed one finds one left
+        CHECK(jw.add_joint(ctga::revolute_joint<double>{ctga::body<0>(0), ctga::ground, o, o, x, x, {1.0, -1.0}}).error == ctga::error_code::limits_reversed);
+        CHECK(jw.add_joint(ctga::prismatic_joint<double>{ctga::body<0>(0), ctga::ground, o, o, x, {}, {1.0, -2.0}}).error == ctga::error_code::negative_limit);
+        CHECK(jw.add_joint(ctga::prismatic_joint<double>{ctga::body<0>(0), ctga::ground, o, o, x, {nan, 0.0}}).error == ctga::error_code::non_finite);
+        // capacity: two joints are six blocks; a spherical joint and two fixed ones fill five, a
+        // third fixed one finds one left
         REQUIRE(jw.add_joint(spherical{ctga::body<0>(0), ctga::ground, o, o}));
+        REQUIRE(jw.add_joint(ctga::fixed_joint<double>{ctga::body<0>(0), ctga::ground, o, o}));
         REQUIRE(jw.add_joint(ctga::fixed_joint<double>{ctga::body<0>(0), ctga::ground, o, o}));
         CHECK(jw.add_joint(ctga::fixed_joint<double>{ctga::body<0>(0), ctga::ground, o, o}).error == ctga::error_code::capacity_exceeded);
     }

@@ -57,6 +57,40 @@ template <class D>
     if constexpr (requires { W.bilateral(i); }) return W.bilateral(i);
     else return false;
 }
+// A block may be bounded (a joint's limits and motor: each row's impulse in an interval), which
+// an operator says by `bounded(i)` and `bounds(i)` (lower, upper). Its natural map is
+// F_k = r_k − clamp(r_k − u_k, lower_k, upper_k), and a sweep solves its rows one by one,
+// r_k ← clamp(r_k − u_k / A_kk, lower_k, upper_k), u updated by A's column k.
+template <class D>
+[[nodiscard]] constexpr bool is_bounded(const D& W, std::size_t i) noexcept {
+    if constexpr (requires { W.bounded(i); }) return W.bounded(i);
+    else return false;
+}
+template <class T, class D>
+[[nodiscard]] constexpr std::array<vec3<T>, 2> bounds_of(const D& W, std::size_t i) noexcept {
+    if constexpr (requires { W.bounds(i); }) return W.bounds(i);
+    else return {};
+}
+template <class T>
+[[nodiscard]] constexpr T clamp_to(const T& x, const T& lower, const T& upper) noexcept {
+    return x < lower ? lower : (x > upper ? upper : x);
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> box_map(const vec3<T>& r, const vec3<T>& u, const std::array<vec3<T>, 2>& b) noexcept {
+    vec3<T> F;
+    for (std::size_t k = 0; k < 3; ++k) F[k] = r[k] - clamp_to(r[k] - u[k], b[0][k], b[1][k]);
+    return F;
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> bounded_step(const mat3<T>& A, vec3<T> u, const std::array<vec3<T>, 2>& b, vec3<T> r) noexcept {
+    for (std::size_t k = 0; k < 3; ++k) {
+        const T next = A[k][k] > T(0) ? clamp_to(r[k] - u[k] / A[k][k], b[0][k], b[1][k]) : clamp_to(r[k], b[0][k], b[1][k]);
+        const T d = next - r[k];
+        r[k] = next;
+        for (std::size_t j = 0; j < 3; ++j) u[j] += A[j][k] * d;
+    }
+    return r;
+}
 // W_ii⁻¹ for a bilateral block: the operator's own when it keeps one (inverse_block), else by cofactors.
 template <class D>
 [[nodiscard]] constexpr auto inverse_block(const D& W, std::size_t i) noexcept {
@@ -260,7 +294,7 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
         if (!all_finite(mu[i], A[0][0], A[0][1], A[0][2], A[1][1], A[1][2], A[2][2], u[0], u[1], u[2], r[3 * i], r[3 * i + 1],
                               r[3 * i + 2]))
             return report.error = error_code::non_finite, report;
-        if (mu[i] < T(0) && !is_bilateral(W, i)) return report.error = error_code::negative_friction, report;
+        if (mu[i] < T(0) && !is_bilateral(W, i) && !is_bounded(W, i)) return report.error = error_code::negative_friction, report;
         if (!(A[0][0] > T(0))) return report.error = error_code::not_positive_definite, report;
     }
     // Row by row, or phase by phase of the schedule (the parts of a phase at once, by the team's
@@ -270,7 +304,8 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
     const auto each_row = [&](auto&& f) { for_each_row(schedule, m, f); };
     const auto term = [&](std::size_t i) {  // ‖F_i‖²
         const vec3<T> u = W.velocity(i, std::span<const T>(r));
-        const vec3<T> F = is_bilateral(W, i) ? u : natural_map(vec3<T>{r[3 * i], r[3 * i + 1], r[3 * i + 2]}, u, mu[i]);
+        const vec3<T> ri{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
+        const vec3<T> F = is_bounded(W, i) ? box_map(ri, u, bounds_of<T>(W, i)) : is_bilateral(W, i) ? u : natural_map(ri, u, mu[i]);
         return linear3::dot(F, F);
     };
     const auto residual = [&] {
@@ -299,7 +334,8 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
             const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
             const vec3<T> u = W.velocity(i, std::span<const T>(r));
             vec3<T> next;
-            if (is_bilateral(W, i)) next = linear3::sub(old, linear3::apply(inverse_block(W, i), u));
+            if (is_bounded(W, i)) next = bounded_step(W.block(i), u, bounds_of<T>(W, i), old);
+            else if (is_bilateral(W, i)) next = linear3::sub(old, linear3::apply(inverse_block(W, i), u));
             else if (settings.local == local_solve::projected) next = projected_step(W.block(i), u, mu[i], old);
             else {
                 const mat3<T> A = W.block(i);

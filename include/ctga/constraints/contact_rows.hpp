@@ -71,7 +71,9 @@ struct row_side {
 // A contact point's three rows: its frame's directions (n, t1, t2), the two sides, its Delassus
 // block, the velocity offsets added to its rows (a contact's normal row: speculative gap,
 // restitution, the caller's law) and the friction coefficient. A bilateral block (a spherical joint: the world's axes as
-// directions, each side at its own anchor) has no cone: its rows hold u = 0.
+// directions, each side at its own anchor) has no cone: its rows hold u = 0. A bounded block (a
+// joint's limits and motor) has an interval for each row's impulse, lower_k ≤ r_k ≤ upper_k, and
+// u_k ≥ 0 where r_k = lower_k, u_k ≤ 0 where r_k = upper_k, u_k = 0 between.
 template <class T>
 struct contact_row {
     std::array<vec3<T>, 3> direction;
@@ -81,6 +83,8 @@ struct contact_row {
     vec3<T> bias;
     T mu;
     bool bilateral = false;
+    bool bounded = false;
+    vec3<T> lower{}, upper{};  // a bounded block's intervals
 };
 
 // Line k of a side: (x × e_k, e_k).
@@ -151,6 +155,8 @@ struct rows_delassus {
     [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept { return rows[i].block; }
     [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept { return rows[i].bilateral; }
     [[nodiscard]] constexpr const mat3<T>& inverse_block(std::size_t i) const noexcept { return rows[i].inverse; }
+    [[nodiscard]] constexpr bool bounded(std::size_t i) const noexcept { return rows[i].bounded; }
+    [[nodiscard]] constexpr std::array<vec3<T>, 2> bounds(std::size_t i) const noexcept { return {rows[i].lower, rows[i].upper}; }
     [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> = {}) const noexcept {
         return linear3::add(rows[i].bias, row_velocity(rows[i], std::span<const screw<T>>(velocity_of_body)));
     }

@@ -10,6 +10,9 @@
 //   hinge     a's axis kept along b's: two couples, t1 and t2 normal to a's axis w (lines at
 //             infinity, co-screws (t, 0): their pairing with a screw is t·ω)
 //   weld      the relative rotation kept: three couples along the world's axes
+//   twist     a revolute joint's limits and motor, about a's axis w: the couples (w, w, −w),
+//             rows lower limit, motor, upper limit (a bounded block, below)
+//   slide     a prismatic joint's, along a's axis w: the lines (w, w, −w) through b's anchor
 //
 // A block's gap g is what its rows hold at zero, with dg/dt = u = J s to first order (the position
 // correction asks for g + h u_p = 0):
@@ -19,13 +22,22 @@
 //   hinge     g_k = t_k · (w_a × w_b): for w_a ≈ w_b, d/dt (w_a × w_b) = ((ω_b − ω_a) normal to w)
 //   weld      g = vee(E), E = R_b (R_a R₀)ᵀ the rotation left from the reference R₀ = R_aᵀ R_b
 //             (vee(E) = sin θ times E's axis; dE/dt = [ω_b − ω_a]× at E = 1)
+//   twist     g = (θ − lower, 0, upper − θ), θ = atan2(w · (x_a × x_b), x_a · x_b) the angle from
+//             a's reference x_a (normal to w) to b's x_b (the same vector when the joint was added)
+//   slide     g = (s − lower, 0, upper − s), s = w · (p_b − p_a)
+// Limits and motor are a bounded block: a limit row's impulse in [0, ∞) (its offset speculative,
+// as a contact's: u⁺ ≥ −u⁻ − 2g/h, or u⁺ ≥ 0 when the free motion would reach it within the step),
+// the motor row's in [−h F, h F] for the effort F (torque or force), its offset −speed, so that it
+// drives u to the speed while it can; an infinite limit or a zero effort is a row held at zero.
 // A block's unused rows (distance: two, line and hinge: one) have no lines: their velocity and
 // impulse are zero, and a 1 on the block's diagonal keeps it invertible.
 #pragma once
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <span>
 
 #include "ctga/constraints/contact_rows.hpp"
@@ -35,7 +47,7 @@
 
 namespace ctga::constraints {
 
-enum class joint_block_kind : std::uint8_t { point, line, distance, hinge, weld };
+enum class joint_block_kind : std::uint8_t { point, line, distance, hinge, weld, twist, slide };
 
 // A block as the world keeps it: moving body a, moving body b or no_body (the ground: b's frame
 // is the world's), anchors and axes in their bodies' frames (unit axes), the weld's reference
@@ -47,6 +59,8 @@ struct joint_block {
     vec3<T> anchor_a{}, anchor_b{}, axis_a{}, axis_b{};
     mat3<T> reference{};
     T length = T(0);
+    vec3<T> reference_a{}, reference_b{};  // a twist's x_a and x_b, in their bodies' frames
+    T lower = T(0), upper = T(0), speed = T(0), effort = T(0);  // a twist's or slide's limits and motor
 };
 
 // The rows a block uses (the others have no lines).
@@ -146,12 +160,46 @@ constexpr vec3<T> joint_row(const joint_block<T>& J, const motor_map<T>& A, cons
             couples({vec3<T>{T(1), T(0), T(0)}, vec3<T>{T(0), T(1), T(0)}, vec3<T>{T(0), T(0), T(1)}});
             gap = joint_detail::relative_vee(B.R, joint_detail::product(A.R, J.reference));
             break;
+        case joint_block_kind::twist:
+        case joint_block_kind::slide: {
+            const vec3<T> w = linear3::apply(A.R, J.axis_a), back = linear3::scale(T(-1), w);
+            T at = linear3::dot(w, d);
+            if (J.kind == joint_block_kind::twist) {
+                const vec3<T> xa = linear3::apply(A.R, J.reference_a), xb = linear3::apply(B.R, J.reference_b);
+                using std::atan2;
+                at = atan2(linear3::dot(w, linear3::cross(xa, xb)), linear3::dot(xa, xb));
+                couples({w, w, back});
+            } else {
+                row.direction = {w, w, back};
+                sides_at(pb, pb);
+            }
+            gap = {at - J.lower, T(0), J.upper - at};
+            break;
+        }
     }
     row.block = delassus_block<T>(row, M);
     for (std::size_t k = used_rows(J.kind); k < 3; ++k) row.block[k][k] = T(1);
     row.inverse = linear3::inverse_symmetric(row.block);
-    row.bias = {}, row.mu = T(0), row.bilateral = true;
+    row.bias = {}, row.mu = T(0);
+    row.bounded = J.kind == joint_block_kind::twist || J.kind == joint_block_kind::slide;
+    row.bilateral = !row.bounded;
     return gap;
+}
+
+// A twist's or slide's offsets and intervals for a step of h (above), from its gaps g and its rows'
+// velocities before the step (u⁻) and free (u_free: the step's forces, no impulse).
+template <class T>
+constexpr void limit_and_motor(const joint_block<T>& J, const vec3<T>& g, const vec3<T>& before, const vec3<T>& free, const T& h,
+                               contact_row<T>& row) noexcept {
+    constexpr T unbounded = std::numeric_limits<T>::infinity();
+    for (const std::size_t k : {std::size_t{0}, std::size_t{2}}) {
+        const bool limited = is_finite(k == 0 ? J.lower : J.upper);
+        const bool closing = g[k] + h * (before[k] + free[k]) / T(2) <= T(0);
+        row.bias[k] = !limited || closing ? T(0) : before[k] + T(2) * g[k] / h;
+        row.lower[k] = T(0), row.upper[k] = limited ? unbounded : T(0);
+    }
+    row.bias[1] = -J.speed;
+    row.lower[1] = -h * J.effort, row.upper[1] = h * J.effort;
 }
 
 }  // namespace ctga::constraints

@@ -16,6 +16,7 @@
 // (least natural-map residual) seen, so a polish never leaves a problem worse than it found it.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <span>
 
@@ -31,6 +32,9 @@ namespace ctga::constraints {
     return 18 * contacts * contacts + 16 * contacts;
 }
 
+// A block's kind for newton_polish: a contact's cone, a bilateral block, a bounded one.
+inline constexpr unsigned char contact_block = 0, bilateral_block = 1, bounded_block = 2;
+
 namespace newton_detail {
 template <class T>
 [[nodiscard]] constexpr T absolute(const T& x) noexcept {
@@ -39,11 +43,12 @@ template <class T>
 
 // ϕ at r (and, when G is not empty, a generalized Jacobian of it, row-major n × n).
 // With the proximal term: u = W r + q + ε (r − c), c the centre.
-// A bilateral block (bilateral[i] ≠ 0) is on the pressed, sticking piece everywhere: ϕ = ρ u.
+// A bilateral block (kind[i] = bilateral_block) is on the pressed, sticking piece everywhere:
+// ϕ = ρ u. A bounded one's rows each ϕ_a = r_a − clamp(r_a − ρ u_a, lower_a, upper_a).
 template <class T>
 constexpr void alart_curnier(std::span<const T> W, std::span<const T> q, std::span<const T> mu, std::span<const T> rho,
                              const T& eps, std::span<const T> c, std::span<const T> r, std::span<T> phi, std::span<T> G,
-                             std::span<const unsigned char> bilateral) noexcept {
+                             std::span<const unsigned char> kind, std::span<const std::array<vec3<T>, 2>> bounds) noexcept {
     const std::size_t n = q.size(), m = n / 3;
     for (std::size_t i = 0; i < m; ++i) {
         vec3<T> u{q[3 * i], q[3 * i + 1], q[3 * i + 2]};
@@ -57,7 +62,18 @@ constexpr void alart_curnier(std::span<const T> W, std::span<const T> q, std::sp
         const T x1 = ri[1] - p * u[1], x2 = ri[2] - p * u[2];
         const T radius = mu[i] * (xn > T(0) ? xn : T(0));
         const T length = math::sqrt(x1 * x1 + x2 * x2);
-        const bool both = !bilateral.empty() && bilateral[i] != 0;
+        if (!kind.empty() && kind[i] == bounded_block) {
+            for (std::size_t a = 0; a < 3; ++a) {
+                const T x = ri[a] - p * u[a], lo = bounds[i][0][a], hi = bounds[i][1][a];
+                const bool free = lo < x && x < hi;
+                phi[3 * i + a] = ri[a] - clamp_to(x, lo, hi);
+                if (G.empty()) continue;
+                for (std::size_t k = 0; k < n; ++k)
+                    G[(3 * i + a) * n + k] = (k == 3 * i + a ? T(1) : T(0)) - (free ? (k == 3 * i + a ? T(1) - p * eps : T(0)) - p * W[(3 * i + a) * n + k] : T(0));
+            }
+            continue;
+        }
+        const bool both = !kind.empty() && kind[i] == bilateral_block;
         const bool pressed = both || xn >= T(0), inside = both || length <= radius;  // at a tie, the active piece
         phi[3 * i] = ri[0] - (pressed ? xn : T(0));
         if (inside) phi[3 * i + 1] = ri[1] - x1, phi[3 * i + 2] = ri[2] - x2;
@@ -135,14 +151,18 @@ constexpr void solve_dense(std::span<T> G, std::span<T> b) noexcept {
 // measure) is at most the tolerance, or max_steps steps. W (3m × 3m, row-major) and q as
 // dense_delassus's; scratch of newton_scratch_size(m) numbers. The report counts Newton steps in
 // `sweeps`.
+// kind (empty: contacts only) gives each block's kind, bounds a bounded block's intervals.
 template <class T>
 constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const T> q, std::span<const T> mu, std::span<T> r,
                                           std::span<T> scratch, const T& tolerance, std::size_t max_steps = 30,
-                                          std::span<const unsigned char> bilateral = {}) noexcept {
+                                          std::span<const unsigned char> kind = {},
+                                          std::span<const std::array<vec3<T>, 2>> bounds = {}) noexcept {
     const std::size_t n = q.size(), m = n / 3;
     contact_report<T> report;
-    if (mu.size() != m || r.size() != n || scratch.size() < newton_scratch_size(m) || (!bilateral.empty() && bilateral.size() != m))
+    if (mu.size() != m || r.size() != n || scratch.size() < newton_scratch_size(m) || (!kind.empty() && kind.size() != m))
         return report.error = error_code::size_mismatch, report;
+    for (std::size_t i = 0; i < kind.size(); ++i)
+        if (kind[i] == bounded_block && bounds.size() != m) return report.error = error_code::size_mismatch, report;
     std::span<T> G = scratch.subspan(0, n * n), phi = scratch.subspan(n * n, n), step = scratch.subspan(n * n + n, n),
                  trial = scratch.subspan(n * n + 2 * n, n), best = scratch.subspan(n * n + 3 * n, n),
                  centre = scratch.subspan(n * n + 4 * n, n), rho = scratch.subspan(n * n + 5 * n, m);
@@ -158,7 +178,9 @@ constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const 
         T sum = T(0);
         for (std::size_t i = 0; i < m; ++i) {
             const vec3<T> u = D.velocity(i, x);
-            const vec3<T> F = !bilateral.empty() && bilateral[i] ? u : natural_map(vec3<T>{x[3 * i], x[3 * i + 1], x[3 * i + 2]}, u, mu[i]);
+            const vec3<T> xi{x[3 * i], x[3 * i + 1], x[3 * i + 2]};
+            const unsigned char k = kind.empty() ? contact_block : kind[i];
+            const vec3<T> F = k == bounded_block ? box_map(xi, u, bounds[i]) : k == bilateral_block ? u : natural_map(xi, u, mu[i]);
             sum += linear3::dot(F, F);
         }
         return math::sqrt(sum);
@@ -168,7 +190,7 @@ constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const 
     report.residual = best_residual;
     while (report.residual > tolerance && report.sweeps < max_steps) {
         ++report.sweeps;
-        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, G, bilateral);
+        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, G, kind, bounds);
         const T merit = newton_detail::squared<T>(phi);
         for (std::size_t i = 0; i < n; ++i) step[i] = -phi[i];
         newton_detail::solve_dense<T>(G, step);
@@ -176,12 +198,12 @@ constexpr contact_report<T> newton_polish(std::span<const T> W, std::span<const 
         bool descended = false;
         for (int halving = 0; halving < 20 && !descended; ++halving, t /= T(2)) {
             for (std::size_t i = 0; i < n; ++i) trial[i] = r[i] + t * step[i];
-            newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, trial, phi, {}, bilateral);
+            newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, trial, phi, {}, kind, bounds);
             descended = newton_detail::squared<T>(phi) <= (T(1) - T(1e-4) * t) * merit;
         }
         for (std::size_t i = 0; i < n; ++i) r[i] = trial[i];
         // the proximal problem solved (or stuck): move its centre to the point reached
-        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, {}, bilateral);
+        newton_detail::alart_curnier<T>(W, q, mu, rho, eps, centre, r, phi, {}, kind, bounds);
         if (!descended || newton_detail::squared<T>(phi) <= T(1e-4) * merit)
             for (std::size_t i = 0; i < n; ++i) centre[i] = r[i];
         report.residual = residual(r);

@@ -258,11 +258,11 @@ public:
           keys_(rows_for(capacity), storage), separation_(rows_for(capacity), storage), before_normal_(rows_for(capacity), storage),
           surface_(rows_for(capacity), storage),
           impulse_(3 * rows_for(capacity), storage), correction_(3 * rows_for(capacity), storage), mu_(rows_for(capacity), storage), arm_(rows_for(capacity), storage), stored_(capacity.contacts, storage),
-          conjugate_(6 * rows_for(capacity), storage), dense_(9 * settings.polish_limit * settings.polish_limit + 3 * settings.polish_limit, storage),
+          conjugate_(6 * rows_for(capacity), storage), dense_(9 * settings.polish_limit * settings.polish_limit + 6 * settings.polish_limit, storage),
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
-          joints_(2 * capacity.joints, storage), joint_impulse_(2 * capacity.joints, storage), joint_error_(2 * capacity.joints, storage),
-          joint_before_(2 * capacity.joints, storage), joined_(capacity.joints, storage),
-          bilateral_(settings.polish_limit, storage), order_(rows_for(capacity), storage),
+          joints_(3 * capacity.joints, storage), joint_impulse_(3 * capacity.joints, storage), joint_error_(3 * capacity.joints, storage),
+          joint_before_(3 * capacity.joints, storage), joined_(capacity.joints, storage),
+          kind_(settings.polish_limit, storage), bounds_(settings.polish_limit, storage), order_(rows_for(capacity), storage),
           part_start_(max_partitions + 2, storage), phase_start_(3, storage),
           part_of_row_(rows_for(capacity), storage), partial_(rows_for(capacity), storage),
           crew_(settings.threads),
@@ -346,8 +346,9 @@ public:
 
     // A joint (joints.hpp) between two bodies, or a body and the ground; its first block's index
     // (joint_impulse). Reported: bad_index (a body not added), joint_to_itself, non_finite (an
-    // anchor, axis or length), zero_direction (a zero axis), non_positive_size (a length ≤ 0),
-    // capacity_exceeded. The two bodies no longer collide with each other.
+    // anchor, axis, length, limit, speed or effort; a limit may be infinite), zero_direction (a
+    // zero axis), non_positive_size (a length ≤ 0), limits_reversed, negative_limit (an effort
+    // < 0), capacity_exceeded (three blocks a joint at most). The two bodies no longer collide.
     template <class J>
     checked<std::size_t> add_joint(const J& j) noexcept {
         static_assert(is_joint_v<J, T>, "ctga::physics_world::add_joint: a joint is a spherical_, revolute_, prismatic_, fixed_ or distance_joint of the world's scalar");
@@ -370,9 +371,17 @@ public:
             if (e == error_code::none) e = normalise(unit.axis_b);
         if constexpr (requires { unit.length; })
             if (e == error_code::none) e = !is_finite(unit.length) ? error_code::non_finite : !(unit.length > T(0)) ? error_code::non_positive_size : e;
+        if constexpr (requires { unit.limits; })
+            if (e == error_code::none) {
+                const joint_limits<T>& l = unit.limits;
+                const joint_motor<T>& m = unit.motor;
+                if (l.lower != l.lower || l.upper != l.upper || !is_finite(m.speed) || !is_finite(m.effort)) e = error_code::non_finite;
+                else if (l.lower > l.upper) e = error_code::limits_reversed;
+                else if (m.effort < T(0)) e = error_code::negative_limit;
+            }
         if (e != error_code::none) return {0, e};
         const auto rotation = [&](std::uint32_t x) { return x == constraints::no_body ? identity3() : map_of(pose_[x]).R; };
-        std::array<constraints::joint_block<T>, 2> blocks;
+        std::array<constraints::joint_block<T>, 3> blocks;
         const std::size_t n = joint_detail::blocks_of<T>(unit, a, b, rotation(a), rotation(b), blocks);
         const std::size_t first = blocks_;
         if (first + n > joints_.size()) return {0, error_code::capacity_exceeded};
@@ -487,12 +496,17 @@ public:
             joint_error_[j] = constraints::joint_row<T>(J, map_[J.a], J.b == constraints::no_body ? motor_map<T>{identity3(), {}} : map_[J.b],
                                                         mobilities(), row);
             joint_before_[j] = constraints::row_velocity(row, bodies(before_));
+            if (row.bounded)
+                constraints::limit_and_motor<T>(J, joint_error_[j], joint_before_[j], constraints::row_velocity(row, bodies(velocity_)), h, row);
             mu_[j] = T(0);
         });
         T turned = T(0);
         for (std::size_t j = 0; j < blocks_; ++j) {
+            using constraints::joint_block_kind;
+            const joint_block_kind kind = joints_[j].kind;
+            if (kind == joint_block_kind::twist || kind == joint_block_kind::slide) continue;  // (its gaps: distances to its limits)
             const T gap = math::sqrt(linear3::dot(joint_error_[j], joint_error_[j]));
-            const bool angular = joints_[j].kind == constraints::joint_block_kind::hinge || joints_[j].kind == constraints::joint_block_kind::weld;
+            const bool angular = kind == joint_block_kind::hinge || kind == joint_block_kind::weld;
             (angular ? turned : worst) = std::max(angular ? turned : worst, gap);
         }
         report.joint_angle = turned;
@@ -616,14 +630,15 @@ public:
     void solve(const T& h, step_report<T>& report) noexcept {
         constraints::rows_delassus<T> W{rows(), mobilities(), velocities()};
         const bool small = contacts_ <= settings_.polish_limit;
-        if (small) polish(W, report.contact);
+        const std::span<T> r(impulse_.data(), 3 * contacts_);
+        if (small) polish(W, r, report.contact);
         if (!small || !report.contact.converged) {
             const std::size_t steps = report.contact.polish_steps;
             const constraints::sweep_schedule<T> plan = schedule();
             report.contact = constraints::solve_contacts<T>(
                 W, std::span<const T>(mu_.data(), contacts_), std::span<T>(impulse_.data(), 3 * contacts_), settings_.solver,
                 settings_.conjugate ? std::span<T>(conjugate_.data(), 6 * contacts_) : std::span<T>{}, &plan);
-            if (small && !report.contact.converged && report.contact.error == error_code::none) polish(W, report.contact);
+            if (small && !report.contact.converged && report.contact.error == error_code::none) polish(W, r, report.contact);
             report.contact.polish_steps += steps;
         }
         // (each row's flag in partial_, read in row order after)
@@ -631,13 +646,15 @@ public:
             correction_[3 * c] = correction_[3 * c + 1] = correction_[3 * c + 2] = T(0);
             bool needed = false;
             if (c < blocks_) {
-                // the joint's gap at the step's end, φ⁺ = φ + h (u⁻ + u⁺)/2 on each axis, all of it removed
+                // the joint's gap at the step's end, φ⁺ = φ + h (u⁻ + u⁺)/2 on each axis, all of it
+                // removed (a joint has no slop); a limit's only where it is passed, a motor's not at all
                 const vec3<T> after = constraints::row_velocity(rows_[c], bodies(velocity_));
                 for (std::size_t k = 0; k < 3; ++k) {
                     const T gap = joint_error_[c][k] + h * (joint_before_[c][k] + after[k]) / T(2);
                     rows_[c].bias[k] = gap / h;  // the pseudo-velocities add no energy
-                    needed = needed || gap != T(0);  // a joint has no slop
+                    needed = needed || (rows_[c].bounded ? gap < T(0) && k != 1 && rows_[c].upper[k] > T(0) : gap != T(0));
                 }
+                if (rows_[c].bounded) rows_[c].lower[1] = rows_[c].upper[1] = T(0);
             } else {
                 // the gap allowed at the end: the penetration the step started with, less the
                 // fraction `correction` of it, and the slop; what this step's own motion would
@@ -660,16 +677,20 @@ public:
         constraints::contact_settings<T> correcting = settings_.solver;
         correcting.max_sweeps = settings_.correction_sweeps;
         const constraints::sweep_schedule<T> plan = schedule();
-        report.correction = constraints::solve_contacts<T>(P, std::span<const T>(mu_.data(), contacts_),
-                                                           std::span<T>(correction_.data(), 3 * contacts_), correcting, {}, &plan);
+        const std::span<T> shift(correction_.data(), 3 * contacts_);
+        report.correction = constraints::solve_contacts<T>(P, std::span<const T>(mu_.data(), contacts_), shift, correcting, {}, &plan);
+        // (a joint's limit and its point sweep slowly against each other: a pendulum stopped at its
+        // limit, 0.98 a sweep, measured; Newton finishes a small problem)
+        if (contacts_ <= settings_.polish_limit && !report.correction.converged && report.correction.error == error_code::none)
+            polish(P, shift, report.correction);
     }
 
     // Newton on the problem held densely: W_ij = Σ over the bodies contacts i and j share of
-    // ± L_i(N⁻¹ L_j), q = u − W r at the impulses the sweeps reached; the change of impulse is
-    // then applied to the bodies.
-    void polish(constraints::rows_delassus<T>& W, constraints::contact_report<T>& report) noexcept {
+    // ± L_i(N⁻¹ L_j), q = u − W r at the impulses r the sweeps reached (the step's, or the
+    // correction's); the change of impulse is then applied to the bodies.
+    void polish(constraints::rows_delassus<T>& W, std::span<T> r, constraints::contact_report<T>& report) noexcept {
         const std::size_t n = 3 * contacts_;
-        std::span<T> D(dense_.data(), n * n), q(dense_.data() + n * n, n), r(impulse_.data(), n);
+        std::span<T> D(dense_.data(), n * n), q(dense_.data() + n * n, n), before(dense_.data() + n * n + n, n);
         const auto block = [&](const constraints::row_side<T>& x, const constraints::row_side<T>& y, T sign, std::size_t i, std::size_t j) {
             if (x.body == constraints::no_body || x.body != y.body) return;
             for (std::size_t a = 0; a < 3; ++a)
@@ -691,12 +712,15 @@ public:
                 q[3 * i + a] = s;
             }
         }
-        std::span<T> before(correction_.data(), n);  // free until the position correction
         for (std::size_t k = 0; k < n; ++k) before[k] = r[k];
-        for (std::size_t i = 0; i < contacts_; ++i) bilateral_[i] = rows_[i].bilateral;
+        for (std::size_t i = 0; i < contacts_; ++i) {
+            const constraints::contact_row<T>& row = rows_[i];
+            kind_[i] = row.bounded ? constraints::bounded_block : row.bilateral ? constraints::bilateral_block : constraints::contact_block;
+            bounds_[i] = {row.lower, row.upper};
+        }
         const constraints::contact_report<T> newton = constraints::newton_polish<T>(
             D, q, std::span<const T>(mu_.data(), contacts_), r, std::span<T>(scratch_), settings_.solver.tolerance, 30,
-            std::span<const unsigned char>(bilateral_.data(), contacts_));
+            std::span<const unsigned char>(kind_.data(), contacts_), std::span<const std::array<vec3<T>, 2>>(bounds_.data(), contacts_));
         for (std::size_t i = 0; i < contacts_; ++i)
             W.apply(i, vec3<T>{r[3 * i] - before[3 * i], r[3 * i + 1] - before[3 * i + 1], r[3 * i + 2] - before[3 * i + 2]});
         report.residual = newton.residual, report.converged = newton.converged, report.error = newton.error;
@@ -805,8 +829,8 @@ private:
             if (b >= g.offset && b < g.offset + g.capacity) f(g, b - g.offset);
         });
     }
-    // the rows a step may have: the contact points and the joints' blocks (at most two a joint)
-    static constexpr std::size_t rows_for(const world_capacity& c) noexcept { return c.contacts + 2 * c.joints; }
+    // the rows a step may have: the contact points and the joints' blocks (at most three a joint)
+    static constexpr std::size_t rows_for(const world_capacity& c) noexcept { return c.contacts + 3 * c.joints; }
     static constexpr std::size_t sum(const std::array<std::size_t, kinds>& a) noexcept {
         std::size_t s = 0;
         for (std::size_t x : a) s += x;
@@ -918,7 +942,8 @@ private:
     std::pmr::vector<constraints::joint_block<T>> joints_;  // the joints' blocks (each joint one or two)
     std::pmr::vector<vec3<T>> joint_impulse_, joint_error_, joint_before_;
     std::pmr::vector<std::uint64_t> joined_;  // pairs of jointed bodies, sorted
-    std::pmr::vector<unsigned char> bilateral_;
+    std::pmr::vector<unsigned char> kind_;  // a problem to polish: its blocks' kinds and bounds (newton_polish.hpp)
+    std::pmr::vector<std::array<vec3<T>, 2>> bounds_;
     std::pmr::vector<std::uint32_t> order_, part_start_, phase_start_;  // rows by part (sweep_schedule)
     std::pmr::vector<std::uint16_t> part_of_row_;
     std::pmr::vector<T> partial_;

@@ -13,6 +13,8 @@
 #                                     minverse), at -O2
 #   (b7) bench/compile/collision_all.cpp  every collision shape kind and every pair a scene can
 #                                     meet (separation, contact, bounds, ray casts), at -O2
+#   (b8) bench/contact.cpp            the scenes with contact (physics_world of cubes and of jointed
+#                                     spheres, the pinch), without the peers' rows, at -O2
 #   (c) the heaviest test unit         only with --with-heaviest (about 30 s)
 #   (e) bench/compile/tree_dynamics.cpp  one tree's RNEA, ABA and CRBA at -O2 against its number of
 #                                     bodies: serial chains of 8, 16, 32 and 64 bodies, the 39-body
@@ -146,6 +148,8 @@ measure_unit "(b6) arm7 RNEA+ABA derivatives, -O2" bench/compile/arm7_derivative
     "$(measure_cmd "$root/bench/compile/arm7_derivatives.cpp" "-O2")"
 measure_unit "(b7) collision: every shape kind and pair, -O2" bench/compile/collision_all.cpp "$ref_dir" \
     "$(measure_cmd "$root/bench/compile/collision_all.cpp" "-O2")"
+measure_unit "(b8) scenes with contact (ctga_contact_bench without peers), -O2" bench/contact.cpp "$ref_dir" \
+    "$(measure_cmd "$root/bench/contact.cpp" "-O2")"
 if ((with_heaviest)); then
     compile_db_read "$db" "${heaviest//./\\.}\$"
     ((${#cdb_files[@]} == 1)) || { echo "compile-cost: $heaviest not in $db (configure with CTGA_BUILD_TESTS=ON)" >&2; exit 1; }

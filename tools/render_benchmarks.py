@@ -434,13 +434,14 @@ def work_precision(precision, img_dir):
             residual = f"{b['residual']:.2g}" if impl.startswith("ctga") else "—"
             out.append(f"| {impl} | {t:.3g} | {b[counter]:.2g} | {b['penetration']:.2g} | {residual} |")
             family, _, knob = impl.rpartition("_")
-            series.setdefault(family, []).append((t, max(b[counter], 1e-18), knob))
+            series.setdefault(family, []).append((int(knob), t, max(b[counter], 1e-18)))
         out.append("")
         for family, points in series.items():
-            points.sort()
-            ax.plot([p[0] for p in points], [p[1] for p in points], "o-", label=family)
-            for t, e, knob in points:
-                ax.annotate(knob, (t, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
+            points.sort()  # by tolerance or by iterations: the curve a user moves along
+            legend, colour, name = WORK_FAMILIES.get(family, (family, None, str))
+            ax.plot([p[1] for p in points], [p[2] for p in points], "o-", label=legend, color=colour)
+            for knob, t, e in points:
+                ax.annotate(name(knob), (t, e), textcoords="offset points", xytext=(4, 4), fontsize=7)
         ax.set_xscale("log")
         ax.set_yscale("log")
         ax.set_xlabel(f"time per step ({unit})")
@@ -455,6 +456,11 @@ def work_precision(precision, img_dir):
 
 
 WORK_PRECISION_SVG = "contact_work_precision.svg"
+# a row family's legend, colour (the same in both panels) and how its knob is written
+WORK_FAMILIES = {"ctga_tol": ("ctga, to a tolerance", "C0", lambda e: f"1e-{e}"),
+                 "ctga": ("ctga, n sweeps", "C1", str),
+                 "bullet": ("Bullet 3.24, n iterations", "C2", str),
+                 "mujoco": ("MuJoCo 2.2.2, n iterations", "C3", str)}
 
 
 def replace_section(title, new, out_md):

@@ -93,7 +93,7 @@ template <class J>
 }
 // The limits and motor of b relative to a, or, the joint turned around, of a relative to b.
 template <class J, class T>
-constexpr void limit_and_motor(const J& j, bool turned, constraints::joint_block<T>& x) noexcept {
+constexpr void take_limits(const J& j, bool turned, constraints::joint_block<T>& x) noexcept {
     x.lower = turned ? -j.limits.upper : j.limits.lower, x.upper = turned ? -j.limits.lower : j.limits.upper;
     x.speed = turned ? -j.motor.speed : j.motor.speed, x.effort = j.motor.effort;
 }
@@ -104,7 +104,6 @@ constexpr void limit_and_motor(const J& j, bool turned, constraints::joint_block
 template <class T, class J>
 constexpr std::size_t blocks_of(const J& j, std::uint32_t a, std::uint32_t b, const mat3<T>& Ra, const mat3<T>& Rb,
                                 std::array<constraints::joint_block<T>, 3>& out) noexcept {
-    static_assert(is_joint_v<J, T>, "ctga::physics_world::add_joint: a joint is a spherical_, revolute_, prismatic_, fixed_ or distance_joint of the world's scalar");
     using kind = constraints::joint_block_kind;
     const bool turned = a == constraints::no_body;
     constraints::joint_block<T> base;
@@ -133,7 +132,7 @@ constexpr std::size_t blocks_of(const J& j, std::uint32_t a, std::uint32_t b, co
         out[2].axis_a = out[1].axis_a;
         out[2].reference_a = constraints::tangents(out[2].axis_a)[0];
         out[2].reference_b = linear3::apply_transposed(RB, linear3::apply(RA, out[2].reference_a));
-        limit_and_motor(j, turned, out[2]);
+        take_limits(j, turned, out[2]);
         return 3;
     } else {
         // fixed and prismatic: the relative rotation kept
@@ -148,7 +147,7 @@ constexpr std::size_t blocks_of(const J& j, std::uint32_t a, std::uint32_t b, co
             if (limited(j)) {
                 out[2] = block(kind::slide);
                 out[2].axis_a = out[0].axis_a;
-                limit_and_motor(j, turned, out[2]);
+                take_limits(j, turned, out[2]);
                 return 3;
             }
         }

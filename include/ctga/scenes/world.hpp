@@ -15,8 +15,9 @@
 // given to it (a conveyor, a turntable): its surface's velocity k enters the rows as an offset,
 // u = J s + k, and nothing pushes it. Joints (joints.hpp:
 // spherical, revolute, prismatic, fixed, distance) hold two bodies, or a body and the ground,
-// together: one or two blocks of three bilateral rows each (constraints/joint_rows.hpp), solved
-// with the contacts in one problem (joints first in each sweep); jointed bodies do not collide.
+// together: one to three blocks of three rows each (constraints/joint_rows.hpp), solved with the
+// contacts in one problem (joints first in each sweep); jointed bodies do not collide. Elastic
+// couplings (couplings.hpp, §7: K and D) push with −K ξ − D s, applied as the step starts.
 //
 // The step, in its stages (each a member function of that name):
 //   collide         poses' maps, broadphase boxes, manifolds within the speculative reach
@@ -76,10 +77,12 @@
 #include "ctga/mechanics/mass_properties.hpp"
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/scenes/body_kinds.hpp"
+#include "ctga/scenes/couplings.hpp"
 #include "ctga/scenes/joints.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
 #include "ctga/support/team.hpp"
+#include "ctga/support/unit_direction.hpp"
 
 namespace ctga {
 
@@ -125,6 +128,7 @@ struct world_capacity {
     std::size_t contacts = 1024;  // manifold points per step
     std::size_t pairs = 1024;     // broadphase pairs
     std::size_t joints = 0;
+    std::size_t couplings = 0;  // elastic couplings (couplings.hpp)
 };
 
 template <class T>
@@ -218,6 +222,13 @@ struct stored_impulse {
     vec3<T> local;  // the point in body a's frame
 };
 
+// An elastic coupling as the world keeps it: global body ids (no_body for the ground).
+template <class T>
+struct coupling_record {
+    std::uint32_t a, b;
+    elastic_coupling<T> coupling;
+};
+
 // A manifold found by collide, between moving body a and moving body b or static shape b.
 template <class T>
 struct found_manifold {
@@ -265,7 +276,8 @@ public:
           conjugate_(6 * rows_for(capacity), storage), dense_(9 * settings.polish_limit * settings.polish_limit + 6 * settings.polish_limit, storage),
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
           joints_(3 * capacity.joints, storage), joint_impulse_(3 * capacity.joints, storage), joint_error_(3 * capacity.joints, storage),
-          joint_before_(3 * capacity.joints, storage), joined_(capacity.joints, storage),
+          joint_before_(3 * capacity.joints, storage), joined_(capacity.joints, storage), couplings_(capacity.couplings, storage),
+          coupled_(total_, storage),
           kind_(settings.polish_limit, storage), bounds_(settings.polish_limit, storage), order_(rows_for(capacity), storage),
           part_start_(max_partitions + 2, storage), phase_start_(3, storage),
           part_of_row_(rows_for(capacity), storage), partial_(rows_for(capacity), storage),
@@ -363,11 +375,9 @@ public:
             return {0, error_code::non_finite};
         J unit = j;
         const auto normalise = [](vec3<T>& axis) {
-            if (!all_finite(axis[0], axis[1], axis[2])) return error_code::non_finite;
-            const T length = math::sqrt(linear3::dot(axis, axis));
-            if (!(length > T(0))) return error_code::zero_direction;
-            axis = linear3::scale(T(1) / length, axis);
-            return error_code::none;
+            const checked<std::array<T, 3>> u = unit_direction(axis[0], axis[1], axis[2]);
+            if (u) axis = u.value;
+            return u.error;
         };
         error_code e = error_code::none;
         if constexpr (requires { unit.axis_a; }) e = normalise(unit.axis_a);
@@ -401,6 +411,26 @@ public:
             }
         }
         return {first, error_code::none};
+    }
+
+    // An elastic coupling (couplings.hpp, §7) between two bodies, or a body and the ground; its
+    // index. Reported: bad_index, joint_to_itself, not_a_motor (a frame), non_finite (K or D),
+    // not_symmetric (K or D), capacity_exceeded.
+    checked<std::size_t> add_coupling(const elastic_coupling<T>& c) noexcept {
+        const std::uint32_t a = global(c.a), b = global(c.b);
+        if ((a == bad_ref && c.a != ground) || (b == bad_ref && c.b != ground)) return {0, error_code::bad_index};
+        if (a == b) return {0, error_code::joint_to_itself};
+        if (!near_unit(c.frame_a) || !near_unit(c.frame_b)) return {0, error_code::not_a_motor};
+        for (const matrix6<T>* M : {&c.stiffness, &c.damping})
+            for (std::size_t i = 0; i < 6; ++i)
+                for (std::size_t j = 0; j < 6; ++j) {
+                    if (!is_finite((*M)[i][j])) return {0, error_code::non_finite};
+                    const T d = (*M)[i][j] - (*M)[j][i], size = (*M)[i][i] + (*M)[j][j];
+                    if ((d < T(0) ? -d : d) > T(1e-12) * (size < T(0) ? -size : size)) return {0, error_code::not_symmetric};
+                }
+        if (couplings_count_ == couplings_.size()) return {0, error_code::capacity_exceeded};
+        couplings_[couplings_count_] = {a, b, c};
+        return {couplings_count_++, error_code::none};
     }
 
     // ---- the step ----
@@ -473,6 +503,7 @@ public:
     // frame, by the kind's own formula), each body's mobility in the world's axes, and each
     // manifold point's rows.
     error_code build_rows(const T& h, step_report<T>& report) noexcept {
+        couple();
         for_each_body_at_once([&](auto& g, std::size_t i, std::size_t b) {
             using G = std::remove_cvref_t<decltype(g)>;
             using K = typename G::K;
@@ -483,9 +514,11 @@ public:
             const screw<T> ab = body_acceleration<subspace::full, K, T>(g.data[i], sb);
             const vec3<T> dw = linear3::apply(R, vec3<T>{ab[0], ab[1], ab[2]});
             mobility_[b] = world_detail::world_mobility<K, T>(g.data[i], R);
-            // the applied wrench's share: h N⁻¹ (τ, f)
-            const screw<T> dv = constraints::respond(mobility_[b], coscrew<T>{h * torque_[b][0], h * torque_[b][1], h * torque_[b][2],
-                                                                             h * force_[b][0], h * force_[b][1], h * force_[b][2]});
+            // the applied wrench's and the couplings' share: h N⁻¹ (τ, f)
+            const coscrew<T>& c = coupled_[b];
+            const screw<T> dv = constraints::respond(
+                mobility_[b], coscrew<T>{h * (torque_[b][0] + c[0]), h * (torque_[b][1] + c[1]), h * (torque_[b][2] + c[2]),
+                                         h * (force_[b][0] + c[3]), h * (force_[b][1] + c[4]), h * (force_[b][2] + c[5])});
             velocity_[b] = screw<T>{s[0] + h * dw[0] + dv[0], s[1] + h * dw[1] + dv[1], s[2] + h * dw[2] + dv[2],
                                     s[3] + h * settings_.gravity[0] + dv[3], s[4] + h * settings_.gravity[1] + dv[4],
                                     s[5] + h * settings_.gravity[2] + dv[5]};
@@ -884,6 +917,37 @@ private:
         const vec3<T> v = linear3::add(vec3<T>{m[3], m[4], m[5]}, linear3::cross(w, linear3::sub(x, static_map_[s].t)));
         return {linear3::dot(e[0], v), linear3::dot(e[1], v), linear3::dot(e[2], v)};
     }
+    // Each body's wrench from the couplings (about its centre, world axes), at the step's start:
+    // W = −K ξ − D s on b at its frame's origin p (couplings.hpp), −W on a along the same line.
+    void couple() noexcept {
+        for (std::size_t b = 0; b < total_; ++b) coupled_[b] = coscrew<T>{};
+        for (std::size_t k = 0; k < couplings_count_; ++k) {
+            const world_detail::coupling_record<T>& c = couplings_[k];
+            const auto frame = [&](std::uint32_t body, const motor<T>& f) { return body == constraints::no_body ? f : motor<T>(pose_[body] * f); };
+            const motor<T> A = frame(c.a, c.coupling.frame_a), B = frame(c.b, c.coupling.frame_b);
+            const screw<T> xi = ctga::log(motor<T>(conj(A) * B));
+            const motor_map<T> MA = map_of(A), MB = map_of(B);
+            const vec3<T>& p = MB.t;
+            // the velocity of body x's point at p, and its angular velocity
+            const auto at_p = [&](std::uint32_t x) -> std::array<vec3<T>, 2> {
+                if (x == constraints::no_body) return {};
+                const screw<T>& s = velocity_[x];
+                const vec3<T> w{s[0], s[1], s[2]};
+                return {w, linear3::add(vec3<T>{s[3], s[4], s[5]}, linear3::cross(w, linear3::sub(p, map_[x].t)))};
+            };
+            const std::array<vec3<T>, 2> va = at_p(c.a), vb = at_p(c.b);
+            const vec3<T> w = linear3::apply_transposed(MA.R, linear3::sub(vb[0], va[0])), v = linear3::apply_transposed(MA.R, linear3::sub(vb[1], va[1]));
+            const coscrew<T> W = coupling_wrench(c.coupling.stiffness, c.coupling.damping, xi, screw<T>{w[0], w[1], w[2], v[0], v[1], v[2]});
+            const vec3<T> tau = linear3::apply(MA.R, vec3<T>{W[0], W[1], W[2]}), f = linear3::apply(MA.R, vec3<T>{W[3], W[4], W[5]});
+            const auto push = [&](std::uint32_t x, const T& sign) {
+                if (x == constraints::no_body) return;
+                const vec3<T> moment = linear3::add(tau, linear3::cross(linear3::sub(p, map_[x].t), f));
+                for (std::size_t i = 0; i < 3; ++i) coupled_[x][i] += sign * moment[i], coupled_[x][3 + i] += sign * f[i];
+            };
+            push(c.b, T(1));
+            push(c.a, T(-1));
+        }
+    }
     static constexpr std::uint32_t bad_ref = ~std::uint32_t{0} - 1;
     static constexpr mat3<T> identity3() noexcept { return {vec3<T>{T(1), T(0), T(0)}, vec3<T>{T(0), T(1), T(0)}, vec3<T>{T(0), T(0), T(1)}}; }
     // A body_ref's global id: no_body for the ground, bad_ref for a body that was not added.
@@ -953,13 +1017,15 @@ private:
     std::pmr::vector<constraints::joint_block<T>> joints_;  // the joints' blocks (each joint one or two)
     std::pmr::vector<vec3<T>> joint_impulse_, joint_error_, joint_before_;
     std::pmr::vector<std::uint64_t> joined_;  // pairs of jointed bodies, sorted
+    std::pmr::vector<world_detail::coupling_record<T>> couplings_;
+    std::pmr::vector<coscrew<T>> coupled_;  // each body's wrench from the couplings this step
     std::pmr::vector<unsigned char> kind_;  // a problem to polish: its blocks' kinds and bounds (newton_polish.hpp)
     std::pmr::vector<std::array<vec3<T>, 2>> bounds_;
     std::pmr::vector<std::uint32_t> order_, part_start_, phase_start_;  // rows by part (sweep_schedule)
     std::pmr::vector<std::uint16_t> part_of_row_;
     std::pmr::vector<T> partial_;
     team crew_;
-    std::size_t blocks_ = 0, joined_count_ = 0;  // blocks_: the joints' blocks, the rows' first
+    std::size_t blocks_ = 0, joined_count_ = 0, couplings_count_ = 0;  // blocks_: the joints' blocks, the rows' first
     std::size_t manifolds_ = 0, contacts_ = 0, stored_count_ = 0;  // contacts_: rows in use, the joints' first
     collision::broadphase<T> broadphase_;
 };

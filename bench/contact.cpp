@@ -43,21 +43,20 @@
 #include <ctga/collision/sphere.hpp>
 #include <ctga/scenes/world.hpp>
 
-#ifdef CTGA_BENCH_BULLET
-#include <btBulletDynamicsCommon.h>
-#endif
+#include "contact_scenes.hpp"
 #ifdef CTGA_BENCH_MUJOCO
-#include <cstdio>
 #include <sstream>
-
-#include "mujoco_xml.hpp"
 #endif
+
+namespace bench {
+void register_pile();  // contact_pile.cpp
+}
 
 namespace {
 
+using namespace bench;
 using ctga::motor;
 namespace collision = ctga::collision;
-constexpr double h = 1.0 / 60, gravity = 10.0;
 constexpr int pyramid_base = 100, pyramid_steps = 200;
 constexpr int grid_size = 100, grid_steps = 100;
 constexpr double cube_half = 0.5, cube_density = 100.0, friction = 0.6;
@@ -69,19 +68,6 @@ constexpr double pinch_box_density = 500.0, pinch_finger_density = 1000.0;
 constexpr double pinch_h = 1e-3;  // a grasp's step, as robotics users run MuJoCo (60 Hz: every peer flew apart)
 constexpr int pinch_steps = 2000;
 
-struct scene_result {
-    double ms_per_step = 0, drift = 0, penetration = 0, joint_error = 0, slip = 0, residual = 0;
-    std::string failed;  // why the row's figures do not count (a peer dropped contacts)
-};
-
-void report(benchmark::State& state, const scene_result& r) {
-    state.counters["ms_per_step"] = r.ms_per_step;
-    state.counters["drift"] = r.drift;
-    state.counters["penetration"] = r.penetration;
-    state.counters["joint_error"] = r.joint_error;
-    state.counters["slip"] = r.slip;
-    state.counters["residual"] = r.residual;
-}
 
 // cube j of row i of a pyramid of the given base
 ctga::vec3<double> pyramid_cube(int i, int j, int base = pyramid_base) {
@@ -99,14 +85,6 @@ pinch_push pinch_wrench(double side, const ctga::vec3<double>& a, const ctga::ve
     return {{d[0], d[1], d[2] + (finger_mass + box_mass / 2) * gravity}, {0.0, side * pinch_finger * box_mass * gravity / 2, 0.0}};
 }
 
-template <class Run>
-scene_result timed(int steps, Run&& run) {
-    scene_result r;
-    const auto start = std::chrono::steady_clock::now();
-    for (int k = 0; k < steps; ++k) run(r);
-    r.ms_per_step = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count() / steps;
-    return r;
-}
 
 // ---- ctga ------------------------------------------------------------------------------------
 
@@ -114,16 +92,6 @@ using cube = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::diagonal,
 using ball = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::sphere, collision::sphere<double>>;
 using spherical = ctga::spherical_joint<double>;
 
-ctga::world_settings<double> ctga_settings(std::size_t sweeps, std::size_t threads = 1, double tolerance = 1e-6) {
-    ctga::world_settings<double> s;
-    s.threads = threads;
-    s.partitions = threads;  // one part per thread (one thread and two parts give the same numbers as two threads)
-    s.gravity = {0.0, -gravity, 0.0};
-    s.solver.tolerance = tolerance;
-    s.solver.max_sweeps = sweeps;
-    s.solver.check_every = 4;
-    return s;
-}
 
 scene_result ctga_pyramid(std::size_t sweeps, std::size_t threads = 1, int base = pyramid_base, int steps = pyramid_steps,
                           double tolerance = 1e-6) {
@@ -141,6 +109,7 @@ scene_result ctga_pyramid(std::size_t sweeps, std::size_t threads = 1, int base 
     const ctga::vec3<double> top = pyramid_cube(base - 1, base - 1, base);
     scene_result r = timed(steps, [&](scene_result& out) {
         const ctga::step_report<double> s = w->step(h);
+        note(out, s);
         out.penetration = std::max(out.penetration, s.penetration);
         out.residual = std::max(out.residual, s.contact.residual);
     });
@@ -169,6 +138,7 @@ scene_result ctga_grid(std::size_t sweeps, std::size_t threads = 1) {
         }
     return timed(grid_steps, [&](scene_result& out) {
         const ctga::step_report<double> s = w->step(h);
+        note(out, s);
         out.joint_error = std::max(out.joint_error, s.joint_error);
     });
 }
@@ -193,6 +163,7 @@ scene_result ctga_pinch(double tolerance) {
         w.set_wrench<0>(1, left.force, left.torque);
         w.set_wrench<0>(2, right.force, right.torque);
         const ctga::step_report<double> s = w.step(pinch_h);
+        note(out, s);
         out.residual = std::max(out.residual, s.contact.residual);
         out.penetration = std::max(out.penetration, s.penetration);
         slip += std::abs(w.velocity<0>(0)[5] - (w.velocity<0>(1)[5] + w.velocity<0>(2)[5]) / 2);
@@ -204,49 +175,6 @@ scene_result ctga_pinch(double tolerance) {
 // ---- Bullet ----------------------------------------------------------------------------------
 
 #ifdef CTGA_BENCH_BULLET
-struct bullet_world {
-    btDefaultCollisionConfiguration config;
-    btCollisionDispatcher dispatcher{&config};
-    btDbvtBroadphase broadphase;
-    btSequentialImpulseConstraintSolver solver;
-    btDiscreteDynamicsWorld world{&dispatcher, &broadphase, &solver, &config};
-    std::vector<std::unique_ptr<btCollisionShape>> shapes;
-    std::vector<std::unique_ptr<btDefaultMotionState>> states;
-    std::vector<std::unique_ptr<btRigidBody>> bodies;
-    std::vector<std::unique_ptr<btTypedConstraint>> joints;
-
-    explicit bullet_world(int iterations = 10, const btVector3& g = btVector3(0, -gravity, 0)) {
-        world.setGravity(g);
-        world.getSolverInfo().m_numIterations = iterations;
-    }
-    ~bullet_world() {
-        for (auto& j : joints) world.removeConstraint(j.get());
-        for (auto& b : bodies) world.removeRigidBody(b.get());
-    }
-    // (Bullet's friction between two bodies is the product of theirs: each is given √μ)
-    btRigidBody* add(btCollisionShape* shape, double mass, const btVector3& at, double mu, int group = 1, int mask = -1) {
-        btTransform p;
-        p.setIdentity();
-        p.setOrigin(at);
-        btVector3 inertia(0, 0, 0);
-        if (mass > 0) shape->calculateLocalInertia(mass, inertia);
-        states.push_back(std::make_unique<btDefaultMotionState>(p));
-        btRigidBody::btRigidBodyConstructionInfo info(mass, states.back().get(), shape, inertia);
-        info.m_friction = std::sqrt(mu);
-        bodies.push_back(std::make_unique<btRigidBody>(info));
-        bodies.back()->setActivationState(DISABLE_DEACTIVATION);
-        world.addRigidBody(bodies.back().get(), group, mask);
-        return bodies.back().get();
-    }
-    double penetration() {
-        double deepest = 0;
-        for (int i = 0; i < dispatcher.getNumManifolds(); ++i) {
-            const btPersistentManifold* m = dispatcher.getManifoldByIndexInternal(i);
-            for (int c = 0; c < m->getNumContacts(); ++c) deepest = std::max(deepest, -double(m->getContactPoint(c).getDistance()));
-        }
-        return deepest;
-    }
-};
 
 scene_result bullet_pyramid(int base = pyramid_base, int steps = pyramid_steps, int iterations = 10) {
     bullet_world b(iterations);
@@ -343,28 +271,6 @@ std::string size_for_pyramid(int n) {
 // the gigabytes a scene of nv degrees of freedom and `rows` constraint rows needs.
 double mujoco_jacobian_gb(double nv, double rows) { return nv * rows * 8 / 1e9; }
 
-struct mujoco_scene {
-    mjModel* m = nullptr;
-    mjData* d = nullptr;
-    explicit mujoco_scene(const std::string& xml) {
-        std::string error;
-        m = bench::load_mjcf(xml, "ctga_contact.xml", error);
-        if (!m) {
-            std::fprintf(stderr, "ctga_contact_bench: MuJoCo refused the model: %s\n", error.c_str());
-            std::exit(1);
-        }
-        d = mj_makeData(m);
-    }
-    ~mujoco_scene() {
-        mj_deleteData(d);
-        mj_deleteModel(m);
-    }
-    double penetration() const {
-        double deepest = 0;
-        for (int c = 0; c < d->ncon; ++c) deepest = std::max(deepest, -double(d->contact[c].dist));
-        return deepest;
-    }
-};
 
 // free cubes on a ground box; the geoms' friction 0.6 (MuJoCo takes the larger of two), density 100
 scene_result mujoco_pyramid(int base = pyramid_base, int steps = pyramid_steps, int iterations = 100) {
@@ -469,13 +375,6 @@ scene_result mujoco_grid() {
 }
 #endif
 
-template <class Scene>
-void run(benchmark::State& state, Scene scene) {
-    scene_result r;
-    for (auto _ : state) r = scene();
-    if (!r.failed.empty()) state.SkipWithError(r.failed.c_str());
-    report(state, r);
-}
 
 #ifdef CTGA_BENCH_MUJOCO
 // MuJoCo's rows when its Jacobian fits in 8 GB; else the row says why not
@@ -493,12 +392,7 @@ void run_mujoco(benchmark::State& state, double nv, double rows, Scene scene) {
 #endif
 
 void register_all() {
-    const auto add = [](const std::string& name, auto scene) {
-        benchmark::RegisterBenchmark(name.c_str(), [scene](benchmark::State& s) { run(s, scene); })
-            ->Unit(benchmark::kMillisecond)
-            ->Iterations(1)
-            ->UseRealTime();
-    };
+    const auto add = [](const std::string& name, auto scene) { add_scene(name, scene); };
     add("large_pyramid/ctga", [] { return ctga_pyramid(100); });
     add("large_pyramid/ctga_2threads", [] { return ctga_pyramid(100, 2); });
     add("joint_grid/ctga", [] { return ctga_grid(100); });
@@ -541,6 +435,7 @@ void register_all() {
 
 int main(int argc, char** argv) {
     register_all();
+    bench::register_pile();
     benchmark::Initialize(&argc, argv);
     if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 1;
     benchmark::RunSpecifiedBenchmarks();

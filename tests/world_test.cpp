@@ -9,6 +9,7 @@
 
 #include <ctga/collision/box.hpp>
 #include <ctga/collision/half_space.hpp>
+#include <ctga/collision/hull.hpp>
 #include <ctga/collision/sphere.hpp>
 #include <ctga/chains/algorithms.hpp>
 #include <ctga/scenes/world.hpp>
@@ -130,6 +131,58 @@ TEST_CASE("world: a stack of ten boxes alternating 1 and 1000 kg/m^3 stands") {
     const ctga::vec3<double> top = centre(w.pose<0>(9));
     CHECK(std::abs(top[0]) + std::abs(top[1]) + std::abs(top[2] - 9.5) <= 1e-9);
     CHECK(deepest <= 1e-8);  // the issue asks ≤ 1 % of the size
+}
+
+TEST_CASE("world: a hull leaning over its base stands while its centre of mass is above the base, and tips when not") {
+    // A parallelepiped: the unit square at z = 0, the same square shifted by s along x at z = 1;
+    // volume 1, centre (1/2 + s/2, 1/2, 1/2), an xz product of inertia: its principal axes are
+    // turned about y. On a plane it stands while the centre is over the base (s < 1), else tips.
+    using rock = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::diagonal, collision::convex_hull<double, 8>>;
+    for (const double s : {0.8, 1.2}) {
+        std::array<ctga::vec3<double>, 8> points{};
+        for (int k = 0; k < 8; ++k) points[k] = {(k & 1) + (k & 4 ? s : 0.0), double((k >> 1) & 1), double((k >> 2) & 1)};
+        const auto given = *collision::make_hull(points);
+        const auto moved = *collision::on_principal_axes(given, 100.0);
+        const auto frame = ctga::map_of(moved.frame);
+        const auto p0 = *collision::mass_of(given, 100.0), p = *collision::mass_of(moved.shape, 100.0);
+        CHECK(std::abs(p0.com[0] - (0.5 + s / 2)) + std::abs(p0.com[1] - 0.5) + std::abs(p0.com[2] - 0.5) <= 1e-14);
+        CHECK(std::abs(p.mass - 100.0) <= 1e-12);
+        CHECK(std::sqrt(ctga::linear3::dot(p.com, p.com)) <= 1e-15);
+        const double trace = p.inertia_c[0][0] + p.inertia_c[1][1] + p.inertia_c[2][2];
+        CHECK(std::abs(p0.inertia_c[0][2]) >= 1.0);  // (the given axes are not principal)
+        CHECK(std::abs(p.inertia_c[0][1]) + std::abs(p.inertia_c[0][2]) + std::abs(p.inertia_c[1][2]) <= 1e-13 * trace);
+        CHECK(std::abs(p.inertia_c[0][0] + p.inertia_c[1][1] + p.inertia_c[2][2] - (p0.inertia_c[0][0] + p0.inertia_c[1][1] + p0.inertia_c[2][2])) <= 1e-12 * trace);
+        for (std::size_t i = 0; i < given.vertex_count; ++i) {  // the same solid: frame · moved vertex = given vertex
+            const auto x = ctga::linear3::add(ctga::linear3::apply(frame.R, moved.shape.vertex[i]), frame.t);
+            CHECK(std::abs(x[0] - given.vertex[i][0]) + std::abs(x[1] - given.vertex[i][1]) + std::abs(x[2] - given.vertex[i][2]) <= 1e-14);
+        }
+        ctga::physics_world<double, plane, rock> w({1}, {.statics = 1, .contacts = 16, .pairs = 4});
+        w.settings().solver.tolerance = 1e-12;
+        REQUIRE(w.add_static(plane{}, motor<double>(ctga::make_translator(0.0, 0.0, 0.0)), {0.8, 0.0}));
+        CHECK(w.add_body<0>(given, 100.0, motor<double>(ctga::make_translator(0.0, 0.0, 0.0)), {0.8, 0.0}).error == ctga::error_code::not_aligned);
+        REQUIRE(w.add_body<0>(moved.shape, 100.0, moved.frame, {0.8, 0.0}));
+        const ctga::vec3<double> start = centre(w.pose<0>(0));
+        double weight = 0;  // the normal impulses of the last step, against m g h
+        for (int k = 0; k < 120; ++k) {
+            const ctga::step_report<double> r = w.step(h);
+            REQUIRE(r.error == ctga::error_code::none);
+            weight = 0;
+            for (std::size_t c = 0; c < r.contacts; ++c) weight += w.contact_impulse(c)[0];
+        }
+        const auto R = ctga::map_of(w.pose<0>(0)).R;
+        double turned = 0;  // the angle between the start's and the end's axes: acos((tr(R0ᵀ R) − 1) / 2)
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j) turned += frame.R[j][i] * R[j][i];
+        turned = std::acos(std::clamp((turned - 1) / 2, -1.0, 1.0));
+        const ctga::vec3<double> d = ctga::linear3::sub(centre(w.pose<0>(0)), start);
+        if (s < 1) {
+            CHECK(std::sqrt(ctga::linear3::dot(d, d)) <= 1e-9);
+            CHECK(turned <= 1e-9);
+            CHECK(std::abs(weight / (100.0 * g * h) - 1) <= 1e-9);
+        } else {
+            CHECK(turned >= 0.5);  // it fell over its edge x = 1
+        }
+    }
 }
 
 TEST_CASE("world: a free body on a spherical joint moves as the same pendulum built as a tree (ABA)") {

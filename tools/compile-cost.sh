@@ -15,6 +15,8 @@
 #                                     meet (separation, contact, bounds, ray casts), at -O2
 #   (b8) bench/contact.cpp            the scenes with contact (physics_world of cubes and of jointed
 #                                     spheres, the pinch), without the peers' rows, at -O2
+#   (b9) bench/contact_pile.cpp       the mixed pile (a world of four body kinds: spheres, capsules,
+#                                     boxes, hulls), without the peers' rows, at -O2
 #   (c) the heaviest test unit         only with --with-heaviest (about 30 s)
 #   (e) bench/compile/tree_dynamics.cpp  one tree's RNEA, ABA and CRBA at -O2 against its number of
 #                                     bodies: serial chains of 8, 16, 32 and 64 bodies, the 39-body
@@ -150,6 +152,8 @@ measure_unit "(b7) collision: every shape kind and pair, -O2" bench/compile/coll
     "$(measure_cmd "$root/bench/compile/collision_all.cpp" "-O2")"
 measure_unit "(b8) scenes with contact (ctga_contact_bench without peers), -O2" bench/contact.cpp "$ref_dir" \
     "$(measure_cmd "$root/bench/contact.cpp" "-O2")"
+measure_unit "(b9) the mixed pile (ctga_contact_bench without peers), -O2" bench/contact_pile.cpp "$ref_dir" \
+    "$(measure_cmd "$root/bench/contact_pile.cpp" "-O2")"
 if ((with_heaviest)); then
     compile_db_read "$db" "${heaviest//./\\.}\$"
     ((${#cdb_files[@]} == 1)) || { echo "compile-cost: $heaviest not in $db (configure with CTGA_BUILD_TESTS=ON)" >&2; exit 1; }

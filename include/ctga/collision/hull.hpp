@@ -27,6 +27,7 @@
 #include "ctga/collision/separation.hpp"
 #include "ctga/mechanics/linear3.hpp"
 #include "ctga/mechanics/mass_properties.hpp"
+#include "ctga/mechanics/motor.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
 
@@ -298,6 +299,31 @@ template <class T, std::size_t N>
         for (std::size_t j = 0; j < 3; ++j) I[i][j] = (i == j ? trace : T(0)) - C[i][j];
     if (!is_finite(density)) return {{}, error_code::non_finite};
     return make_mass_properties(m, linear3::add(c, g), I);
+}
+
+// A hull moved to the frame a moving body needs (scenes/body_kinds.hpp: the origin at the centre
+// of mass, the axes principal): the frame of its inertia's eigenvectors V at its centre c
+// (mass_of above), in which a point x of the given frame is Vᵀ (x − c), a face's normal Vᵀ n and
+// its offset d − n·c; and that frame as a motor in the given one (c, V): a body placed at a pose g
+// in the given frame is at g · frame. Reported as mass_of.
+template <class T, std::size_t N>
+struct principal_hull {
+    convex_hull<T, N> shape;
+    motor<T> frame;
+};
+template <class T, std::size_t N>
+[[nodiscard]] constexpr checked<principal_hull<T, N>> on_principal_axes(const convex_hull<T, N>& h, const T& density) noexcept {
+    const checked<mass_properties<T>> p = mass_of(h, density);
+    if (!p) return {{}, p.error};
+    const vec3<T> c = p->com;
+    const mat3<T> V = linear3::eigen_symmetric(p->inertia_c).V;
+    principal_hull<T, N> out{h, rigid_motion(make_translator(c[0], c[1], c[2]), rotor_of(V))};
+    for (std::size_t i = 0; i < h.vertex_count; ++i) out.shape.vertex[i] = linear3::apply_transposed(V, linear3::sub(h.vertex[i], c));
+    for (std::size_t f = 0; f < h.face_count; ++f) {
+        out.shape.face[f].normal = linear3::apply_transposed(V, h.face[f].normal);
+        out.shape.face[f].offset = h.face[f].offset - linear3::dot(h.face[f].normal, c);
+    }
+    return {out, error_code::none};
 }
 
 }  // namespace ctga::collision

@@ -5,7 +5,10 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <type_traits>
+
+#include "ctga/support/math.hpp"
 
 namespace ctga {
 
@@ -155,6 +158,48 @@ template <class T>
     const T a = c00 * inv_det, b = c01 * inv_det, c = c02 * inv_det, d = c11 * inv_det, e = c12 * inv_det,
             f = c22 * inv_det;
     return {{{a, b, c}, {b, d, e}, {c, e, f}}};
+}
+
+// A symmetric S as V diag(d) Vᵀ: cyclic Jacobi rotations (Golub and Van Loan, §8.5), each zeroing
+// one off-diagonal entry, until the off-diagonal part is below rounding (quadratic convergence:
+// a few sweeps). V's columns are the eigenvectors; V is a rotation (det +1: a column's sign is
+// free, the last is turned when det is −1).
+template <class T>
+struct symmetric_eigen {
+    mat3<T> V;
+    vec3<T> d;
+};
+template <class T>
+[[nodiscard]] constexpr symmetric_eigen<T> eigen_symmetric(mat3<T> A) noexcept {
+    mat3<T> V{{{T(1), T(0), T(0)}, {T(0), T(1), T(0)}, {T(0), T(0), T(1)}}};
+    const T scale = A[0][0] * A[0][0] + A[1][1] * A[1][1] + A[2][2] * A[2][2] +
+                    T(2) * (A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2]);
+    const T tiny = std::numeric_limits<T>::epsilon() * std::numeric_limits<T>::epsilon() * scale;
+    for (int sweep = 0; sweep < 32; ++sweep) {
+        if (A[0][1] * A[0][1] + A[0][2] * A[0][2] + A[1][2] * A[1][2] <= tiny) break;
+        for (const auto& [p, q] : {std::array<std::size_t, 2>{0, 1}, {0, 2}, {1, 2}}) {
+            if (A[p][q] == T(0)) continue;
+            // the rotation J in the (p, q) plane with (Jᵀ A J)_pq = 0: t = tan of its angle, the
+            // smaller root of t² + 2θt − 1 = 0, θ = (A_qq − A_pp) / (2 A_pq)
+            const T theta = (A[q][q] - A[p][p]) / (T(2) * A[p][q]);
+            const T t = (theta >= T(0) ? T(1) : T(-1)) / ((theta >= T(0) ? theta : -theta) + math::sqrt(theta * theta + T(1)));
+            const T c = T(1) / math::sqrt(t * t + T(1)), s = t * c;
+            for (std::size_t k = 0; k < 3; ++k) {  // A ← A J (columns p, q), V ← V J
+                const T akp = A[k][p], akq = A[k][q];
+                A[k][p] = c * akp - s * akq, A[k][q] = s * akp + c * akq;
+                const T vkp = V[k][p], vkq = V[k][q];
+                V[k][p] = c * vkp - s * vkq, V[k][q] = s * vkp + c * vkq;
+            }
+            for (std::size_t k = 0; k < 3; ++k) {  // A ← Jᵀ A (rows p, q)
+                const T apk = A[p][k], aqk = A[q][k];
+                A[p][k] = c * apk - s * aqk, A[q][k] = s * apk + c * aqk;
+            }
+        }
+    }
+    const vec3<T> c0{V[0][0], V[1][0], V[2][0]}, c1{V[0][1], V[1][1], V[2][1]}, c2{V[0][2], V[1][2], V[2][2]};
+    if (dot(cross(c0, c1), c2) < T(0))
+        for (std::size_t k = 0; k < 3; ++k) V[k][2] = -V[k][2];
+    return {V, {A[0][0], A[1][1], A[2][2]}};
 }
 
 }  // namespace linear3

@@ -236,6 +236,25 @@ template <class T>
     return out;
 }
 
+// The rotor of a rotation matrix (map_of's R inverted, up to the rotor's sign): Shepperd's
+// method, from the largest of 1 + tr R and 1 + 2 R_ii − tr R (4 α_k² each), so that the square
+// root is never of a small number.
+template <class T>
+[[nodiscard]] constexpr rotor<T> rotor_of(const mat3<T>& R) noexcept {
+    const T trace = R[0][0] + R[1][1] + R[2][2];
+    const std::array<T, 4> four{T(1) + trace, T(1) + T(2) * R[0][0] - trace, T(1) + T(2) * R[1][1] - trace, T(1) + T(2) * R[2][2] - trace};
+    std::size_t k = 0;
+    for (std::size_t i = 1; i < 4; ++i)
+        if (four[i] > four[k]) k = i;
+    const T a = math::sqrt(four[k]) / T(2), q = T(1) / (T(4) * a);  // α_k, and 1 / (4 α_k)
+    const T wx = (R[2][1] - R[1][2]) * q, wy = (R[0][2] - R[2][0]) * q, wz = (R[1][0] - R[0][1]) * q;
+    const T xy = (R[1][0] + R[0][1]) * q, xz = (R[0][2] + R[2][0]) * q, yz = (R[2][1] + R[1][2]) * q;
+    if (k == 0) return rotor<T>{a, wx, wy, wz};
+    if (k == 1) return rotor<T>{wx, a, xy, xz};
+    if (k == 2) return rotor<T>{wy, xy, a, yz};
+    return rotor<T>{wz, xz, yz, a};
+}
+
 // The map of g_A g_B (B's frame placed in A's, A placed in the world): R = R_A R_B,
 // t = R_A t_B + t_A, 36m 30a (row i of R_A R_B is R_Bᵀ applied to row i of R_A: with R_B of shape
 // S, linear3.hpp, a turn about a coordinate axis, 21m 15a).

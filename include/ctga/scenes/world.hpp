@@ -154,7 +154,10 @@ template <class K, class T>
     const mat3<T>& I = p.inertia_c;
     const T tiny = T(64) * std::numeric_limits<T>::epsilon() * (I[0][0] + I[1][1] + I[2][2]);
     const auto off = [&](const T& x) { return x > tiny || -x > tiny; };
-    const bool centred = p.com[0] == T(0) && p.com[1] == T(0) && p.com[2] == T(0);
+    // (the centre within rounding of the origin: a hull moved there, on_principal_axes, keeps ~ε of its size)
+    const T reach = math::sqrt((I[0][0] + I[1][1] + I[2][2]) / p.mass);
+    const T c2 = linear3::dot(p.com, p.com), near = T(64) * std::numeric_limits<T>::epsilon() * reach;
+    const bool centred = c2 <= near * near;
     bool ok = centred && !off(I[0][1]) && !off(I[0][2]) && !off(I[1][2]);
     if constexpr (std::is_same_v<K, inertia_kind::sphere>) ok = ok && !off(I[0][0] - I[1][1]) && !off(I[0][0] - I[2][2]);
     if constexpr (std::is_same_v<K, inertia_kind::axisymmetric>) ok = ok && !off(I[0][0] - I[1][1]);

@@ -34,7 +34,7 @@ enum class error_code : unsigned char {
     not_a_motor,            // g g* = 1 fails beyond rounding (or the rotor part is zero)
     not_a_rigid_inertia,    // a 6×6 inertia without the form [[I, m Ĉ], [m Ĉᵀ, m 1]] of §2
     not_a_unit_axis,        // a joint axis u with ‖u‖ ≠ 1 beyond rounding
-    not_aligned,            // a turned or aligned joint's placement has another rotation (chains::turned, aligned)
+    not_aligned,            // a turned or aligned joint's placement has another rotation (chains::turned, aligned); a body's shape off its principal frame
     zero_direction,         // an axis or direction given as the zero vector
     massless_subtree,       // a moving joint that meets no inertia: H singular, ABA's D = 0 (chains::massless_subtree)
     unknown_frame,          // a frame name the tree does not have (chains::tree::find_frame)
@@ -71,7 +71,9 @@ enum class error_code : unsigned char {
             return "ctga: not a rigid body's inertia (mass block m*1, coupling block m*C antisymmetric)";
         case error_code::not_a_unit_axis: return "ctga: a joint axis must be a unit vector";
         case error_code::not_aligned:
-            return "ctga: a turned or aligned joint's placement must have the rotation its type names (aligned: none)";
+            return "ctga: a turned or aligned joint's placement must have the rotation its type names (aligned: none); a "
+                   "moving body's shape must have its centre of mass at its origin on principal axes (a hull: "
+                   "collision::on_principal_axes)";
         case error_code::massless_subtree:
             return "ctga: a moving joint meets no inertia (no mass, or no rotational inertia for a revolute joint, in "
                    "its subtree, and no armature): the mass matrix is singular";

@@ -1,0 +1,174 @@
+// mixed_pile: 1,000 shapes of four kinds dropped into a box, for ctga_contact_bench (contact.cpp
+// has the other scenes and main; the definitions shared with them are in contact_scenes.hpp).
+//   a ground box (6, 1, 6) at y = −1 and four walls (half thickness 0.5, half height 6) whose
+//   inner faces are the planes x = ±5, z = ±5; body n of 1,000 at x = −4.5 + (n mod 10),
+//   z = −4.5 + (⌊n / 10⌋ mod 10), y = 1 + 1.1 ⌊n / 100⌋, turned by 0.61 n rad about
+//   (sin n, cos n, 1/2); its kind n mod 4: a sphere (radius 0.4), a capsule (radius 0.25, segment
+//   0.4 along its z), a box (half extents 0.4, 0.3, 0.2), a rock (the convex hull of ten points
+//   below, whose centre of mass is off its points' origin and whose axes are not principal: the
+//   body is its hull moved to its principal frame, collision::on_principal_axes). Density 100,
+//   friction 0.6, gravity 10 down, 60 Hz, 300 steps (5 s) from rest.
+// ctga at tolerance 1e-6 and at most 100 sweeps a step; mixed_pile_work/ctga_<n> at n sweeps.
+// Counters: ms_per_step; penetration, the largest seen; speed, the fastest body's speed at the end
+// (the pile has come to rest when it is small).
+// Peers: Bullet (btSphereShape, btCapsuleShapeZ, btBoxShape, btConvexHullShape of the rock's
+// moved points with the rock's principal moments), MuJoCo (sphere, capsule, box and a mesh of the
+// rock's points, which MuJoCo moves to its principal frame itself).
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <string>
+
+#include <ctga/collision/box.hpp>
+#include <ctga/collision/capsule.hpp>
+#include <ctga/collision/hull.hpp>
+#include <ctga/collision/sphere.hpp>
+#include <ctga/scenes/world.hpp>
+
+#include "contact_scenes.hpp"
+#ifdef CTGA_BENCH_MUJOCO
+#include <sstream>
+#endif
+
+namespace {
+
+using namespace bench;
+using ctga::motor;
+namespace collision = ctga::collision;
+
+constexpr int pile_bodies = 1000, pile_steps = 300;
+constexpr double pile_density = 100.0, pile_friction = 0.6;
+constexpr double ball_radius = 0.4, pill_radius = 0.25, pill_half = 0.2;
+constexpr ctga::vec3<double> brick{0.4, 0.3, 0.2};
+constexpr std::array<ctga::vec3<double>, 10> rock_points{{{-0.35, -0.3, -0.25},
+                                                          {0.4, -0.3, -0.2},
+                                                          {0.3, 0.25, -0.3},
+                                                          {-0.3, 0.3, -0.2},
+                                                          {-0.25, -0.2, 0.3},
+                                                          {0.35, -0.25, 0.25},
+                                                          {0.2, 0.35, 0.3},
+                                                          {-0.35, 0.2, 0.25},
+                                                          {0.45, 0.1, 0.0},
+                                                          {0.0, 0.0, 0.42}}};
+using rock_hull = collision::convex_hull<double, 16>;
+
+// the container: the ground, then the walls at x = ±5.5 and z = ±5.5 (centre, half extents)
+struct slab {
+    ctga::vec3<double> at, half;
+};
+constexpr std::array<slab, 5> container{{{{0.0, -1.0, 0.0}, {6.0, 1.0, 6.0}},
+                                         {{5.5, 6.0, 0.0}, {0.5, 6.0, 6.0}},
+                                         {{-5.5, 6.0, 0.0}, {0.5, 6.0, 6.0}},
+                                         {{0.0, 6.0, 5.5}, {6.0, 6.0, 0.5}},
+                                         {{0.0, 6.0, -5.5}, {6.0, 6.0, 0.5}}}};
+
+// body n's pose (of the shape as given: the rock's points' frame)
+motor<double> pile_pose(int n) {
+    const double x = -4.5 + n % 10, z = -4.5 + (n / 10) % 10, y = 1.0 + 1.1 * (n / 100);
+    return ctga::make_translator(x, y, z) * ctga::make_rotor(0.61 * n, std::sin(double(n)), std::cos(double(n)), 0.5);
+}
+
+const collision::principal_hull<double, 16>& rock() {
+    static const collision::principal_hull<double, 16> r = *collision::on_principal_axes(*collision::make_hull<16, double>(std::span<const ctga::vec3<double>>(rock_points)), pile_density);
+    return r;
+}
+
+// ---- ctga ------------------------------------------------------------------------------------
+
+using ball = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::sphere, collision::sphere<double>>;
+using pill = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::axisymmetric, collision::capsule<double>>;
+using cube = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::diagonal, collision::box<double>>;
+using stone = ctga::body_kind<ctga::subspace::full, ctga::inertia_kind::diagonal, rock_hull>;
+using pile_world = ctga::physics_world<double, collision::box<double>, ball, pill, cube, stone>;
+
+double linear_speed(const ctga::screw<double>& s) { return std::sqrt(s[3] * s[3] + s[4] * s[4] + s[5] * s[5]); }
+
+scene_result ctga_pile(std::size_t sweeps, std::size_t threads) {
+    constexpr std::size_t quarter = pile_bodies / 4;
+    auto w = std::make_unique<pile_world>(std::array<std::size_t, 4>{quarter, quarter, quarter, quarter},
+                                          ctga::world_capacity{.statics = 5, .contacts = 24 * pile_bodies, .pairs = 16 * pile_bodies},
+                                          ctga_settings(sweeps, threads));
+    for (const slab& s : container)
+        w->add_static(*collision::make_box(s.half[0], s.half[1], s.half[2]), motor<double>(ctga::make_translator(s.at[0], s.at[1], s.at[2])),
+                      {pile_friction, 0.0});
+    const ctga::material<double> m{pile_friction, 0.0};
+    for (int n = 0; n < pile_bodies; ++n) {
+        const motor<double> g = pile_pose(n);
+        switch (n % 4) {
+            case 0: w->add_body<0>(*collision::make_sphere(ball_radius), pile_density, g, m); break;
+            case 1: w->add_body<1>(*collision::make_capsule(pill_radius, pill_half), pile_density, g, m); break;
+            case 2: w->add_body<2>(*collision::make_box(brick[0], brick[1], brick[2]), pile_density, g, m); break;
+            default: w->add_body<3>(rock().shape, pile_density, motor<double>(g * rock().frame), m); break;
+        }
+    }
+    scene_result r = timed(pile_steps, [&](scene_result& out) {
+        const ctga::step_report<double> s = w->step(h);
+        note(out, s);
+        out.penetration = std::max(out.penetration, s.penetration);
+        out.residual = std::max(out.residual, s.contact.residual);
+    });
+    for (std::size_t i = 0; i < quarter; ++i)
+        r.speed = std::max({r.speed, linear_speed(w->velocity<0>(i)), linear_speed(w->velocity<1>(i)), linear_speed(w->velocity<2>(i)),
+                            linear_speed(w->velocity<3>(i))});
+    return r;
+}
+
+// ---- Bullet ----------------------------------------------------------------------------------
+
+#ifdef CTGA_BENCH_BULLET
+btTransform bullet_pose(const motor<double>& g) {
+    const ctga::motor_map<double> G = ctga::map_of(g);
+    const auto& R = G.R;
+    return btTransform(btMatrix3x3(R[0][0], R[0][1], R[0][2], R[1][0], R[1][1], R[1][2], R[2][0], R[2][1], R[2][2]), btVector3(G.t[0], G.t[1], G.t[2]));
+}
+
+scene_result bullet_pile() {
+    bullet_world b;
+    for (const slab& s : container) {
+        b.shapes.push_back(std::make_unique<btBoxShape>(btVector3(s.half[0], s.half[1], s.half[2])));
+        b.add(b.shapes.back().get(), 0.0, btVector3(s.at[0], s.at[1], s.at[2]), pile_friction);
+    }
+    b.shapes.push_back(std::make_unique<btSphereShape>(ball_radius));
+    b.shapes.push_back(std::make_unique<btCapsuleShapeZ>(pill_radius, 2 * pill_half));
+    b.shapes.push_back(std::make_unique<btBoxShape>(btVector3(brick[0], brick[1], brick[2])));
+    auto hull = std::make_unique<btConvexHullShape>();
+    for (std::size_t i = 0; i < rock().shape.vertex_count; ++i) {
+        const ctga::vec3<double>& v = rock().shape.vertex[i];
+        hull->addPoint(btVector3(v[0], v[1], v[2]), i + 1 == rock().shape.vertex_count);
+    }
+    b.shapes.push_back(std::move(hull));
+    // the same masses and principal moments as ctga's bodies
+    const std::array<ctga::mass_properties<double>, 4> props{*collision::mass_of(*collision::make_sphere(ball_radius), pile_density),
+                                                             *collision::mass_of(*collision::make_capsule(pill_radius, pill_half), pile_density),
+                                                             *collision::mass_of(*collision::make_box(brick[0], brick[1], brick[2]), pile_density),
+                                                             *collision::mass_of(rock().shape, pile_density)};
+    const std::size_t first = b.shapes.size() - 4, body0 = b.bodies.size();
+    for (int n = 0; n < pile_bodies; ++n) {
+        const ctga::mass_properties<double>& q = props[n % 4];
+        const motor<double> g = n % 4 == 3 ? motor<double>(pile_pose(n) * rock().frame) : pile_pose(n);
+        b.add(b.shapes[first + n % 4].get(), q.mass, btVector3(q.inertia_c[0][0], q.inertia_c[1][1], q.inertia_c[2][2]), bullet_pose(g), pile_friction);
+    }
+    scene_result r = timed(pile_steps, [&](scene_result& out) {
+        b.world.stepSimulation(h, 0, h);
+        out.penetration = std::max(out.penetration, b.penetration());
+    });
+    for (std::size_t i = body0; i < b.bodies.size(); ++i) r.speed = std::max(r.speed, double(b.bodies[i]->getLinearVelocity().length()));
+    return r;
+}
+#endif
+
+}  // namespace
+
+namespace bench {
+void register_pile() {
+    add_scene("mixed_pile/ctga", [] { return ctga_pile(100, 1); });
+    add_scene("mixed_pile/ctga_2threads", [] { return ctga_pile(100, 2); });
+    for (const std::size_t sweeps : {10, 30})
+        add_scene("mixed_pile_work/ctga_" + std::to_string(sweeps), [sweeps] { return ctga_pile(sweeps, 1); });
+#ifdef CTGA_BENCH_BULLET
+    add_scene("mixed_pile/bullet", bullet_pile);
+#endif
+}
+}  // namespace bench

@@ -228,22 +228,32 @@ template <class T>
 // r_n ← max(0, r_n − u_n / A_nn), then, with u updated, the tangential one
 // r_t ← P(r_t − u_t / ρ) on the disc ‖r_t‖ ≤ μ r_n, ρ = (A_t1t1 + A_t2t2) / 2. Its fixed points
 // are Coulomb's law: 0 ≤ r_n ⊥ u_n ≥ 0, and r_t inside the disc with u_t = 0 or on its rim
-// opposite to u_t (maximal dissipation), that is K_μ ∋ r ⊥ ũ ∈ K*_μ.
+// opposite to u_t (maximal dissipation), that is K_μ ∋ r ⊥ ũ ∈ K*_μ. The step lengths 1/A_nn and
+// 1/ρ are the block's (step_lengths), which an operator may keep with its rows: a sweep then
+// divides only where the disc clips.
 template <class T>
-[[nodiscard]] constexpr vec3<T> projected_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r) noexcept {
-    T rn = r[0] - u[0] / A[0][0];
+[[nodiscard]] constexpr std::array<T, 2> step_lengths(const mat3<T>& A) noexcept {
+    return {T(1) / A[0][0], T(2) / (A[1][1] + A[2][2])};
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> projected_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r,
+                                               const std::array<T, 2>& length) noexcept {
+    T rn = r[0] - u[0] * length[0];
     rn = rn > T(0) ? rn : T(0);
     const T dn = rn - r[0];
-    const T rho = (A[1][1] + A[2][2]) / T(2);
-    T t1 = r[1] - (u[1] + A[1][0] * dn) / rho, t2 = r[2] - (u[2] + A[2][0] * dn) / rho;
-    const T length = math::sqrt(t1 * t1 + t2 * t2), limit = mu * rn;
-    if (length > limit) {
-        const T s = length > T(0) ? limit / length : T(0);
+    T t1 = r[1] - (u[1] + A[1][0] * dn) * length[1], t2 = r[2] - (u[2] + A[2][0] * dn) * length[1];
+    const T squared = t1 * t1 + t2 * t2, limit = mu * rn;
+    if (squared > limit * limit) {
+        const T s = limit / math::sqrt(squared);
         t1 *= s, t2 *= s;
     }
     return {rn, t1, t2};
 }
-
+template <class D>
+[[nodiscard]] constexpr auto step_lengths_of(const D& W, std::size_t i) noexcept {
+    if constexpr (requires { W.step_lengths(i); }) return W.step_lengths(i);
+    else return step_lengths(W.block(i));
+}
 
 // An order of the rows in parts, and the parts in phases: part p is order[part_start[p] ..
 // part_start[p + 1]), phase f the parts [phase_start[f], phase_start[f + 1]). The parts of a phase
@@ -288,11 +298,9 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
     const std::size_t m = W.contacts();
     contact_report<T> report;
     if (mu.size() != m || r.size() != 3 * m) return report.error = error_code::size_mismatch, report;
-    for (std::size_t i = 0; i < m; ++i) {
+    for (std::size_t i = 0; i < m; ++i) {  // (the velocities: by the first residual, below)
         const mat3<T> A = W.block(i);
-        const vec3<T> u = W.velocity(i, std::span<const T>(r));
-        if (!all_finite(mu[i], A[0][0], A[0][1], A[0][2], A[1][1], A[1][2], A[2][2], u[0], u[1], u[2], r[3 * i], r[3 * i + 1],
-                              r[3 * i + 2]))
+        if (!all_finite(mu[i], A[0][0], A[0][1], A[0][2], A[1][1], A[1][2], A[2][2], r[3 * i], r[3 * i + 1], r[3 * i + 2]))
             return report.error = error_code::non_finite, report;
         if (mu[i] < T(0) && !is_bilateral(W, i) && !is_bounded(W, i)) return report.error = error_code::negative_friction, report;
         if (!(A[0][0] > T(0))) return report.error = error_code::not_positive_definite, report;
@@ -323,6 +331,7 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
         return math::sqrt(sum);
     };
     report.residual = residual();
+    if (!is_finite(report.residual)) return report.error = error_code::non_finite, report;  // a velocity is not finite
     const std::size_t every = settings.check_every > 0 ? settings.check_every : 1;
     // the conjugate directions of the nonsmooth nonlinear CG (with scratch of 6m numbers)
     const bool conjugate = scratch.size() >= 6 * m;
@@ -336,7 +345,7 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
             vec3<T> next;
             if (is_bounded(W, i)) next = bounded_step(W.block(i), u, bounds_of<T>(W, i), old);
             else if (is_bilateral(W, i)) next = linear3::sub(old, linear3::apply(inverse_block(W, i), u));
-            else if (settings.local == local_solve::projected) next = projected_step(W.block(i), u, mu[i], old);
+            else if (settings.local == local_solve::projected) next = projected_step(W.block(i), u, mu[i], old, step_lengths_of(W, i));
             else {
                 const mat3<T> A = W.block(i);
                 next = one_contact(A, linear3::sub(u, linear3::apply(A, old)), mu[i]);

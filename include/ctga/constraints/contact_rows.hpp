@@ -79,8 +79,10 @@ struct contact_row {
     std::array<vec3<T>, 3> direction;
     row_side<T> a, b;
     mat3<T> block;
+    std::array<T, 2> step_length{};  // a contact's projected step: 1/W_nn, 2/(W_t1t1 + W_t2t2) (contact_problem.hpp)
     mat3<T> inverse;  // block⁻¹, kept for a bilateral block (its sweeps solve with it)
     vec3<T> bias;
+    T compliance = T(0);  // a soft contact's c (scenes/couplings.hpp): its normal velocity is u_n + c r_n
     T mu;
     bool bilateral = false;
     bool bounded = false;
@@ -118,8 +120,10 @@ template <class T>
     mat3<T> W{};
     for (const row_side<T>* side : {&row.a, &row.b}) {
         if (side->body == no_body) continue;
-        for (std::size_t j = 0; j < 3; ++j)
-            for (std::size_t k = j; k < 3; ++k) W[j][k] += coupling(M[side->body], row, *side, j, row, *side, k);
+        for (std::size_t k = 0; k < 3; ++k) {
+            const screw<T> response = respond(M[side->body], line(row, *side, k));  // N⁻¹ L_k, once for its column
+            for (std::size_t j = 0; j <= k; ++j) W[j][k] += pair(line(row, *side, j), response);
+        }
     }
     for (std::size_t j = 0; j < 3; ++j)
         for (std::size_t k = 0; k < j; ++k) W[j][k] = W[k][j];
@@ -142,7 +146,7 @@ template <class T>
 }
 
 // The rows of a step as the solver's Delassus operator (contact_problem.hpp): the velocities are
-// the moving bodies' screws, kept current as impulses change (u = J s, s = s_free + N⁻¹ Jᵀ r),
+// the moving bodies' screws, kept current as impulses change (u = J s + c r_n, s = s_free + N⁻¹ Jᵀ r),
 // so a contact's velocity costs its sides' pairings and a change of impulse dr one mobility
 // applied per side, to the impulse's co-screw ±Σ dr_k L_k.
 template <class T>
@@ -155,10 +159,13 @@ struct rows_delassus {
     [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept { return rows[i].block; }
     [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept { return rows[i].bilateral; }
     [[nodiscard]] constexpr const mat3<T>& inverse_block(std::size_t i) const noexcept { return rows[i].inverse; }
+    [[nodiscard]] constexpr const std::array<T, 2>& step_lengths(std::size_t i) const noexcept { return rows[i].step_length; }
     [[nodiscard]] constexpr bool bounded(std::size_t i) const noexcept { return rows[i].bounded; }
     [[nodiscard]] constexpr std::array<vec3<T>, 2> bounds(std::size_t i) const noexcept { return {rows[i].lower, rows[i].upper}; }
-    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> = {}) const noexcept {
-        return linear3::add(rows[i].bias, row_velocity(rows[i], std::span<const screw<T>>(velocity_of_body)));
+    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> r = {}) const noexcept {
+        vec3<T> u = linear3::add(rows[i].bias, row_velocity(rows[i], std::span<const screw<T>>(velocity_of_body)));
+        if (!r.empty()) u[0] += rows[i].compliance * r[3 * i];
+        return u;
     }
     constexpr void apply(std::size_t i, const vec3<T>& dr) const noexcept {
         const contact_row<T>& c = rows[i];

@@ -180,7 +180,7 @@ constexpr vec3<T> joint_row(const joint_block<T>& J, const motor_map<T>& A, cons
     row.block = delassus_block<T>(row, M);
     for (std::size_t k = used_rows(J.kind); k < 3; ++k) row.block[k][k] = T(1);
     row.inverse = linear3::inverse_symmetric(row.block);
-    row.bias = {}, row.mu = T(0);
+    row.bias = {}, row.mu = T(0), row.compliance = T(0);
     row.bounded = J.kind == joint_block_kind::twist || J.kind == joint_block_kind::slide;
     row.bilateral = !row.bounded;
     return gap;

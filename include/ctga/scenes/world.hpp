@@ -17,7 +17,9 @@
 // spherical, revolute, prismatic, fixed, distance) hold two bodies, or a body and the ground,
 // together: one to three blocks of three rows each (constraints/joint_rows.hpp), solved with the
 // contacts in one problem (joints first in each sweep); jointed bodies do not collide. Elastic
-// couplings (couplings.hpp, §7: K and D) push with −K ξ − D s, applied as the step starts.
+// couplings (couplings.hpp, §7: K and D) push with −K ξ − D s, applied as the step starts; the
+// same elements make a static shape soft (set_compliance): its contacts' normal rows become
+// springs and dampers, in the contact problem.
 //
 // The step, in its stages (each a member function of that name):
 //   collide         poses' maps, broadphase boxes, manifolds within the speculative reach
@@ -225,6 +227,13 @@ struct stored_impulse {
     vec3<T> local;  // the point in body a's frame
 };
 
+// A moving body's coordinate along the axis the sweeps' slabs divide (partition).
+template <class T>
+struct ranked {
+    T at;
+    std::uint32_t body;
+};
+
 // An elastic coupling as the world keeps it: global body ids (no_body for the ground).
 template <class T>
 struct coupling_record {
@@ -272,7 +281,9 @@ public:
           reach_(total_, storage), radius_(total_, storage), box_(total_, storage), proxy_(total_, storage), static_shape_(storage),
           static_pose_(capacity.statics, storage), static_map_(capacity.statics, storage), static_velocity_(capacity.statics, storage),
           static_box_(capacity.statics, storage), static_material_(capacity.statics, storage),
-          static_bounded_(capacity.statics, storage), static_moving_(capacity.statics, storage), found_(capacity.contacts, storage), rows_(rows_for(capacity), storage),
+          static_bounded_(capacity.statics, storage), static_moving_(capacity.statics, storage), static_soft_(capacity.statics, storage),
+          static_softness_(capacity.statics, storage), found_(capacity.contacts, storage),
+          by_key_(capacity.contacts, storage), first_of_body_(total_ + 1, storage), stored_from_(rows_for(capacity), storage), rows_(rows_for(capacity), storage),
           keys_(rows_for(capacity), storage), separation_(rows_for(capacity), storage), before_normal_(rows_for(capacity), storage),
           surface_(rows_for(capacity), storage),
           impulse_(3 * rows_for(capacity), storage), correction_(3 * rows_for(capacity), storage), mu_(rows_for(capacity), storage), arm_(rows_for(capacity), storage), stored_(capacity.contacts, storage),
@@ -283,7 +294,7 @@ public:
           coupled_(total_, storage),
           kind_(settings.polish_limit, storage), bounds_(settings.polish_limit, storage), order_(rows_for(capacity), storage),
           part_start_(max_partitions + 2, storage), phase_start_(3, storage),
-          part_of_row_(rows_for(capacity), storage), partial_(rows_for(capacity), storage),
+          part_of_row_(rows_for(capacity), storage), slab_of_body_(total_, storage), ranked_(total_, storage), partial_(rows_for(capacity), storage),
           crew_(settings.threads),
           broadphase_(total_ > 0 ? total_ : 1, capacity.pairs, settings.fat_margin, storage) {
         settings_.partitions = settings_.partitions < 1 ? 1 : (settings_.partitions > max_partitions ? max_partitions : settings_.partitions);
@@ -312,7 +323,7 @@ public:
         const std::size_t i = static_shape_.size();
         if (i == static_map_.size()) return {0, error_code::capacity_exceeded};
         static_shape_.push_back(shape);
-        static_pose_[i] = pose, static_material_[i] = m;
+        static_pose_[i] = pose, static_material_[i] = m, static_soft_[i] = false;
         place_static(i);
         if (const error_code e = set_kinematic_velocity(i, velocity); e != error_code::none) {
             static_shape_.pop_back();
@@ -327,6 +338,26 @@ public:
         static_velocity_[s] = velocity;
         static_moving_[s] = false;
         for (std::size_t c = 0; c < 6; ++c) static_moving_[s] = static_moving_[s] || velocity[c] != T(0);
+        return error_code::none;
+    }
+
+    // Static shape s made soft (couplings.hpp: K and D in its frame; its contacts' normal rows
+    // become springs and dampers, taken implicitly). Reported: bad_index, non_finite,
+    // not_symmetric, not_positive_definite (K's translation block not positive definite, or D's
+    // not positive semi-definite).
+    error_code set_compliance(std::size_t s, const contact_compliance<T>& c) noexcept {
+        if (s >= static_shape_.size()) return error_code::bad_index;
+        if (const error_code e = check_elements(c.stiffness, c.damping); e != error_code::none) return e;
+        const auto translation = [](const matrix6<T>& M) {
+            mat3<T> B;
+            for (std::size_t i = 0; i < 3; ++i)
+                for (std::size_t j = 0; j < 3; ++j) B[i][j] = M[3 + i][3 + j];
+            return linear3::eigen_symmetric(B).d;
+        };
+        const vec3<T> k = translation(c.stiffness), d = translation(c.damping);
+        for (std::size_t i = 0; i < 3; ++i)
+            if (!(k[i] > T(0)) || d[i] < T(0)) return error_code::not_positive_definite;
+        static_softness_[s] = c, static_soft_[s] = true;
         return error_code::none;
     }
 
@@ -424,13 +455,7 @@ public:
         if ((a == bad_ref && c.a != ground) || (b == bad_ref && c.b != ground)) return {0, error_code::bad_index};
         if (a == b) return {0, error_code::joint_to_itself};
         if (!near_unit(c.frame_a) || !near_unit(c.frame_b)) return {0, error_code::not_a_motor};
-        for (const matrix6<T>* M : {&c.stiffness, &c.damping})
-            for (std::size_t i = 0; i < 6; ++i)
-                for (std::size_t j = 0; j < 6; ++j) {
-                    if (!is_finite((*M)[i][j])) return {0, error_code::non_finite};
-                    const T d = (*M)[i][j] - (*M)[j][i], size = (*M)[i][i] + (*M)[j][j];
-                    if ((d < T(0) ? -d : d) > T(1e-12) * (size < T(0) ? -size : size)) return {0, error_code::not_symmetric};
-                }
+        if (const error_code e = check_elements(c.stiffness, c.damping); e != error_code::none) return {0, e};
         if (couplings_count_ == couplings_.size()) return {0, error_code::capacity_exceeded};
         couplings_[couplings_count_] = {a, b, c};
         return {couplings_count_++, error_code::none};
@@ -443,6 +468,7 @@ public:
         if (!is_finite(h) || !(h > T(0))) return report.error = error_code::non_finite, report;
         for_each_body([&](auto&, std::size_t, std::size_t b) { before_pose_[b] = pose_[b], before_[b] = velocity_[b]; });
         if ((report.error = collide(h)) != error_code::none) return report;
+        order_manifolds();
         if ((report.error = build_rows(h, report)) != error_code::none) return report;
         partition();
         warm_start();
@@ -502,6 +528,23 @@ public:
         return full ? error_code::capacity_exceeded : error_code::none;
     }
 
+    // The manifolds in the order of their keys (a, b): counted by body a (a is always a moving
+    // body), then each a's few put in order of b by insertion. The rows, and so the impulses
+    // stored for the next step, come out in key order: no sort of the contacts.
+    void order_manifolds() noexcept {
+        std::uint32_t* first = first_of_body_.data();
+        for (std::size_t b = 0; b <= total_; ++b) first[b] = 0;
+        for (std::size_t f = 0; f < manifolds_; ++f) ++first[found_[f].a + 1];
+        for (std::size_t b = 0; b < total_; ++b) first[b + 1] += first[b];
+        for (std::size_t f = 0; f < manifolds_; ++f) by_key_[first[found_[f].a]++] = static_cast<std::uint32_t>(f);
+        for (std::size_t k = 1; k < manifolds_; ++k) {
+            const std::uint32_t f = by_key_[k];
+            std::size_t j = k;
+            for (; j > 0 && found_[by_key_[j - 1]].a == found_[f].a && found_[by_key_[j - 1]].b > found_[f].b; --j) by_key_[j] = by_key_[j - 1];
+            by_key_[j] = f;
+        }
+    }
+
     // The free velocities (gravity; the gyroscopic term of §6's equation of motion, in the body
     // frame, by the kind's own formula), each body's mobility in the world's axes, and each
     // manifold point's rows.
@@ -552,7 +595,7 @@ public:
         report.joint_angle = turned;
         contacts_ = blocks_;
         for (std::size_t f = 0; f < manifolds_; ++f) {
-            const world_detail::found_manifold<T>& fm = found_[f];
+            const world_detail::found_manifold<T>& fm = found_[by_key_[f]];
             const bool fixed = (fm.b & world_detail::statics_bit) != 0;
             const material<T>& ma = material_[fm.a];
             const material<T>& mb = fixed ? static_material_[fm.b & ~world_detail::statics_bit] : material_[fm.b];
@@ -571,14 +614,22 @@ public:
                 row.block = constraints::delassus_block<T>(row, mobility_);
                 row.mu = mu, row.bilateral = false;
                 // a kinematic shape's surface velocity, in every row: u = J s + k
-                const vec3<T> k = fixed ? static_speed(fm.b & ~world_detail::statics_bit, x, dir) : vec3<T>{};
+                const std::size_t s = fm.b & ~world_detail::statics_bit;
+                const vec3<T> k = fixed ? static_speed(s, x, dir) : vec3<T>{};
                 // u⁻ and u_free along n
                 const T before = constraints::row_velocity(row, bodies(before_))[0] + k[0];
                 const T free = constraints::row_velocity(row, bodies(velocity_))[0] + k[0];
                 const T phi = cp.separation;
                 const bool closing = phi + h * (before + free) / T(2) <= T(0);
                 row.bias = k;
-                row.bias[0] += closing ? (before < -settings_.restitution_threshold ? e * before : T(0)) : before + T(2) * phi / h;
+                row.compliance = T(0);
+                if (fixed && static_soft_[s]) {  // a spring and a damper along n (couplings.hpp)
+                    const soft_row<T> soft = soften(static_softness_[s], linear3::apply_transposed(static_map_[s].R, fm.m.normal), phi, h);
+                    row.block[0][0] += soft.compliance, row.bias[0] += soft.offset, row.compliance = soft.compliance;
+                } else {
+                    row.bias[0] += closing ? (before < -settings_.restitution_threshold ? e * before : T(0)) : before + T(2) * phi / h;
+                }
+                row.step_length = constraints::step_lengths(row.block);
                 separation_[contacts_] = phi, before_normal_[contacts_] = before, surface_[contacts_] = k[0];
                 arm_[contacts_] = linear3::sub(x, map_[fm.a].t);
                 mu_[contacts_] = mu;
@@ -592,18 +643,39 @@ public:
     }
 
     // The rows in parts for the sweeps (contact_problem.hpp's sweep_schedule): the moving bodies
-    // are split by their index into `partitions` ranges (the order they were added in, which in a
-    // scene built row by row keeps neighbours together); a row whose bodies lie in one range goes to
-    // that range's part, in row order, and the parts are swept at once; a row across two ranges
-    // goes to the seam, swept after them. The parts depend on the partitions, not on the threads.
+    // are split in space into `partitions` slabs of as many bodies each, across the axis along
+    // which their centres spread most (by rank: the order of their coordinates, ties by index);
+    // a row whose bodies lie in one slab goes to that slab's part, in row order, and the parts
+    // are swept at once; a row across two slabs goes to the seam, swept after them. The parts
+    // depend on the partitions and the positions, not on the threads. (Slabs of body indices
+    // instead put most of a pile's rows on the seam: a world stores its bodies kind by kind, and
+    // a pile's kinds share its space; measured, 1,000 mixed bodies ran slower on two threads.)
     void partition() noexcept {
         const std::size_t P = settings_.partitions > 0 ? settings_.partitions : 1;
-        const auto range_of = [&](std::uint32_t body) { return static_cast<std::size_t>(body) * P / (total_ > 0 ? total_ : 1); };
+        if (P > 1 && total_ > 0) {
+            vec3<T> low = map_[0].t, high = map_[0].t;
+            for (std::size_t b = 1; b < total_; ++b)
+                for (std::size_t c = 0; c < 3; ++c) low[c] = std::min(low[c], map_[b].t[c]), high[c] = std::max(high[c], map_[b].t[c]);
+            std::size_t axis = 0;
+            for (std::size_t c = 1; c < 3; ++c)
+                if (high[c] - low[c] > high[axis] - low[axis]) axis = c;
+            for (std::size_t b = 0; b < total_; ++b) ranked_[b] = {map_[b].t[axis], static_cast<std::uint32_t>(b)};
+            const auto before = [](const world_detail::ranked<T>& x, const world_detail::ranked<T>& y) {
+                return x.at != y.at ? x.at < y.at : x.body < y.body;
+            };
+            for (std::size_t p = 0, first = 0; p < P; ++p) {  // slab p: ranks [p n / P, (p + 1) n / P)
+                const std::size_t end = (p + 1) * total_ / P;
+                if (p + 1 < P) std::nth_element(ranked_.data() + first, ranked_.data() + end, ranked_.data() + total_, before);
+                for (std::size_t k = first; k < end; ++k) slab_of_body_[ranked_[k].body] = static_cast<std::uint16_t>(p);
+                first = end;
+            }
+        }
+        const auto slab_of = [&](std::uint32_t body) { return P > 1 ? std::size_t{slab_of_body_[body]} : std::size_t{0}; };
         std::array<std::uint32_t, max_partitions + 2> count{};
         for (std::size_t i = 0; i < contacts_; ++i) {
             const constraints::contact_row<T>& row = rows_[i];
-            const std::size_t a = range_of(row.a.body);
-            const std::size_t p = row.b.body == constraints::no_body || range_of(row.b.body) == a ? a : P;
+            const std::size_t a = slab_of(row.a.body);
+            const std::size_t p = row.b.body == constraints::no_body || slab_of(row.b.body) == a ? a : P;
             part_of_row_[i] = static_cast<std::uint16_t>(p);
             ++count[p + 1];
         }
@@ -629,7 +701,14 @@ public:
     void warm_start() noexcept {
         const constraints::rows_delassus<T> W{rows(), mobilities(), velocities()};
         const world_detail::stored_impulse<T>*first = stored_.data(), *end = first + stored_count_;
-        const auto by_key = [](const world_detail::stored_impulse<T>& s, const world_detail::contact_key& k) { return s.key < k; };
+        // (rows and stored impulses are both in key order: one merge finds each row's pair)
+        const auto pair_before = [](const world_detail::contact_key& x, const world_detail::contact_key& y) {
+            return x.a != y.a ? x.a < y.a : x.b < y.b;
+        };
+        for (std::size_t c = blocks_, at = 0; c < contacts_; ++c) {
+            while (at < stored_count_ && pair_before(stored_[at].key, keys_[c])) ++at;
+            stored_from_[c] = static_cast<std::uint32_t>(at);
+        }
         at_once(blocks_, [&](std::size_t j) {
             for (std::size_t k = 0; k < 3; ++k) impulse_[3 * j + k] = joint_impulse_[j][k];
         });
@@ -640,7 +719,7 @@ public:
             const world_detail::stored_impulse<T>* match = nullptr;
             T nearest = settings_.margin * settings_.margin;
             bool same_id = false;
-            for (const world_detail::stored_impulse<T>* at = std::lower_bound(first, end, world_detail::contact_key{key.a, key.b, 0}, by_key);
+            for (const world_detail::stored_impulse<T>* at = first + stored_from_[c];
                  at != end && at->key.a == key.a && at->key.b == key.b; ++at) {
                 const vec3<T> d = linear3::sub(at->local, local);
                 const T distance = linear3::dot(d, d);
@@ -703,7 +782,9 @@ public:
                 const T after = constraints::row_velocity(rows_[c], bodies(velocity_))[0] + surface_[c];
                 const T start = separation_[c] < T(0) ? -separation_[c] : T(0);
                 const T allowed = (T(1) - settings_.correction) * start + settings_.slop;
-                const T gap = separation_[c] + h * (before_normal_[c] + after) / T(2) + allowed;
+                // (a soft contact's penetration is its spring's: the correction only keeps it from deepening)
+                const T gap = rows_[c].compliance > T(0) ? T(0) : separation_[c] + h * (before_normal_[c] + after) / T(2) + allowed;
+                rows_[c].compliance = T(0);
                 rows_[c].bias[0] = gap / h;
                 needed = gap < T(0);
                 mu_[c] = T(0);
@@ -711,8 +792,12 @@ public:
                 // without turning them (turning them, a frictionless correction tilts stacked
                 // cubes, which then slide off each other: a pyramid of 210 cubes at 10 sweeps a
                 // step fell, its top 47 m away after 60 s; through the centres, 0.68 m)
-                for (constraints::row_side<T>* side : {&rows_[c].a, &rows_[c].b}) side->moment = {};
-                rows_[c].block = constraints::delassus_block<T>(rows_[c], mobility_);
+                // (so W_jk = Σ_sides e_j·e_k / m = δ_jk Σ 1/m: the directions are orthonormal)
+                T inverse_mass = T(0);
+                for (constraints::row_side<T>* side : {&rows_[c].a, &rows_[c].b})
+                    if (side->moment = {}; side->body != constraints::no_body) inverse_mass += mobility_[side->body].inverse_mass;
+                rows_[c].block = {{{inverse_mass, T(0), T(0)}, {T(0), inverse_mass, T(0)}, {T(0), T(0), inverse_mass}}};
+                rows_[c].step_length = constraints::step_lengths(rows_[c].block);
             }
             partial_[c] = needed ? T(1) : T(0);
         });
@@ -750,8 +835,9 @@ public:
                 block(ri.a, rj.a, T(1), i, j), block(ri.b, rj.b, T(1), i, j);
                 block(ri.a, rj.b, T(-1), i, j), block(ri.b, rj.a, T(-1), i, j);
             }
+        for (std::size_t i = 0; i < contacts_; ++i) D[3 * i * n + 3 * i] += rows_[i].compliance;  // a soft contact's c
         for (std::size_t i = 0; i < contacts_; ++i) {
-            const vec3<T> u = W.velocity(i, {});
+            const vec3<T> u = W.velocity(i, r);
             for (std::size_t a = 0; a < 3; ++a) {
                 T s = u[a];
                 for (std::size_t k = 0; k < n; ++k) s -= D[(3 * i + a) * n + k] * r[k];
@@ -788,7 +874,7 @@ public:
         }
     }
 
-    // The impulses of this step by contact, sorted by key, for the next warm start.
+    // The impulses of this step by contact, in order of their pairs' keys, for the next warm start.
     void store_impulses() noexcept {
         for (std::size_t j = 0; j < blocks_; ++j) joint_impulse_[j] = {impulse_[3 * j], impulse_[3 * j + 1], impulse_[3 * j + 2]};
         for (std::size_t c = blocks_; c < contacts_; ++c) {
@@ -796,9 +882,7 @@ public:
             for (std::size_t k = 0; k < 3; ++k) r = linear3::add_scaled(r, impulse_[3 * c + k], rows_[c].direction[k]);
             stored_[c - blocks_] = {keys_[c], r, local_point(c)};
         }
-        stored_count_ = contacts_ - blocks_;
-        std::sort(stored_.data(), stored_.data() + stored_count_,
-                  [](const world_detail::stored_impulse<T>& x, const world_detail::stored_impulse<T>& y) { return x.key < y.key; });
+        stored_count_ = contacts_ - blocks_;  // (in key order: build_rows went through the manifolds so)
     }
 
     // ---- reading ----
@@ -882,6 +966,17 @@ private:
         std::size_t s = 0;
         for (std::size_t x : a) s += x;
         return s;
+    }
+    // §7's K and D: finite and symmetric.
+    static error_code check_elements(const matrix6<T>& K, const matrix6<T>& D) noexcept {
+        for (const matrix6<T>* M : {&K, &D})
+            for (std::size_t i = 0; i < 6; ++i)
+                for (std::size_t j = 0; j < 6; ++j) {
+                    if (!is_finite((*M)[i][j])) return error_code::non_finite;
+                    const T d = (*M)[i][j] - (*M)[j][i], size = (*M)[i][i] + (*M)[j][j];
+                    if ((d < T(0) ? -d : d) > T(1e-12) * (size < T(0) ? -size : size)) return error_code::not_symmetric;
+                }
+        return error_code::none;
     }
     static error_code check_material(const material<T>& m) noexcept {
         if (!all_finite(m.friction, m.restitution)) return error_code::non_finite;
@@ -1008,8 +1103,11 @@ private:
     std::pmr::vector<screw<T>> static_velocity_;  // a kinematic shape's (zero for a static one)
     std::pmr::vector<collision::aabb<T>> static_box_;
     std::pmr::vector<material<T>> static_material_;
-    std::pmr::vector<bool> static_bounded_, static_moving_;
+    std::pmr::vector<bool> static_bounded_, static_moving_, static_soft_;
+    std::pmr::vector<contact_compliance<T>> static_softness_;  // a soft static shape's K and D (couplings.hpp)
     std::pmr::vector<world_detail::found_manifold<T>> found_;
+    std::pmr::vector<std::uint32_t> by_key_, first_of_body_;  // the manifolds in key order; a counting sort's buckets
+    std::pmr::vector<std::uint32_t> stored_from_;  // each row's first stored impulse of its pair
     std::pmr::vector<constraints::contact_row<T>> rows_;
     std::pmr::vector<world_detail::contact_key> keys_;
     std::pmr::vector<T> separation_, before_normal_, surface_, impulse_, correction_, mu_;  // surface_: a kinematic shape's normal speed
@@ -1025,7 +1123,8 @@ private:
     std::pmr::vector<unsigned char> kind_;  // a problem to polish: its blocks' kinds and bounds (newton_polish.hpp)
     std::pmr::vector<std::array<vec3<T>, 2>> bounds_;
     std::pmr::vector<std::uint32_t> order_, part_start_, phase_start_;  // rows by part (sweep_schedule)
-    std::pmr::vector<std::uint16_t> part_of_row_;
+    std::pmr::vector<std::uint16_t> part_of_row_, slab_of_body_;
+    std::pmr::vector<world_detail::ranked<T>> ranked_;  // the bodies by their coordinate across the slabs
     std::pmr::vector<T> partial_;
     team crew_;
     std::size_t blocks_ = 0, joined_count_ = 0, couplings_count_ = 0;  // blocks_: the joints' blocks, the rows' first

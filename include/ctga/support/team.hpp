@@ -70,7 +70,9 @@ private:
     void serve(std::size_t t) {
         std::uint32_t seen = 0;
         for (;;) {
-            // a short spin first: runs come in quick succession (a solver's sweeps)
+            // a short spin first: runs come in quick succession (a solver's sweeps, two or three a
+            // sweep). 2¹⁸ loads, about 0.1 ms; with 2¹⁴ the threads slept between a pile's phases
+            // (1,000 bodies, 3,900 contacts: each phase about 50 µs) and two ran slower than one.
             for (int spin = 0; spin < spins && generation_.load(std::memory_order_acquire) == seen; ++spin) {}
             generation_.wait(seen, std::memory_order_acquire);
             seen = generation_.load(std::memory_order_acquire);
@@ -80,7 +82,7 @@ private:
         }
     }
 
-    static constexpr int spins = 1 << 14;
+    static constexpr int spins = 1 << 18;
     std::size_t size_;
     std::vector<std::thread> workers_;
     std::atomic<std::uint32_t> generation_{0}, pending_{0};

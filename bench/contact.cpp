@@ -1,6 +1,7 @@
 // ctga_contact_bench: scenes of many bodies that touch (scenes/world.hpp) beside Bullet 3.24
-// (btDiscreteDynamicsWorld at its defaults, double precision) and MuJoCo 2.2.2 (its defaults:
-// Newton, pyramidal cones; free bodies, the grid's joints as `connect` equalities), on the scenes of
+// (btDiscreteDynamicsWorld at its defaults, double precision), MuJoCo 2.2.2 (its defaults:
+// Newton, pyramidal cones; free bodies, the grid's joints as `connect` equalities) and ODE 0.16
+// (quickstep at its defaults; the grid's joints as ball joints), on the scenes of
 // ../shared/reference/contact.md (Box3D's definitions, so that figures compare):
 //   large_pyramid  5,050 unit cubes (half extent 0.5, density 100) in a pyramid of base 100 on a
 //                  ground box (400, 1, 400) at y = −1, friction 0.6; gravity 10 down; 60 Hz; 200
@@ -255,6 +256,61 @@ scene_result bullet_pinch(int iterations) {
 }
 #endif
 
+#ifdef CTGA_BENCH_ODE
+scene_result ode_pyramid() {
+    ode_world o;
+    o.mu = friction;
+    dGeomID ground = dCreateBox(o.space, 800, 2, 800);
+    dGeomSetPosition(ground, 0, -1, 0);
+    const ctga::mass_properties<double> p = *collision::mass_of(*collision::make_box(cube_half, cube_half, cube_half), cube_density);
+    dBodyID top = nullptr;
+    for (int i = 0; i < pyramid_base; ++i)
+        for (int j = i; j < pyramid_base; ++j) {
+            const ctga::vec3<double> c = pyramid_cube(i, j);
+            top = o.add(dCreateBox(o.space, 2 * cube_half, 2 * cube_half, 2 * cube_half), p.mass,
+                        {p.inertia_c[0][0], p.inertia_c[1][1], p.inertia_c[2][2]}, ctga::map_of(motor<double>(ctga::make_translator(c[0], c[1], c[2]))));
+        }
+    const dReal* start = dBodyGetPosition(top);
+    const ctga::vec3<double> top0{start[0], start[1], start[2]};
+    scene_result r = timed(pyramid_steps, [&](scene_result&) { o.step(h); });
+    const dReal* end = dBodyGetPosition(top);
+    const ctga::vec3<double> d{end[0] - top0[0], end[1] - top0[1], end[2] - top0[2]};
+    r.drift = std::sqrt(ctga::linear3::dot(d, d)), r.penetration = o.deepest;
+    return r;
+}
+
+// the spheres without geoms (they collide with nothing), ball joints at the anchors' midpoints
+scene_result ode_grid() {
+    ode_world o;
+    const ctga::mass_properties<double> p = *collision::mass_of(*collision::make_sphere(sphere_radius), sphere_density);
+    std::vector<dBodyID> b(grid_size * grid_size, nullptr);
+    for (int i = 1; i < grid_size; ++i)
+        for (int k = 0; k < grid_size; ++k)
+            b[i * grid_size + k] = o.add(nullptr, p.mass, {p.inertia_c[0][0], p.inertia_c[1][1], p.inertia_c[2][2]},
+                                         ctga::map_of(motor<double>(ctga::make_translator(double(k), double(-i), 0.0))));
+    std::vector<dJointID> joints;
+    const auto ball = [&](dBodyID x, dBodyID y, double ax, double ay) {
+        joints.push_back(dJointCreateBall(o.world, nullptr));
+        dJointAttach(joints.back(), x, y);
+        dJointSetBallAnchor(joints.back(), ax, ay, 0);
+    };
+    for (int i = 1; i < grid_size; ++i)
+        for (int k = 0; k < grid_size; ++k) {
+            ball(b[i * grid_size + k], b[(i - 1) * grid_size + k], double(k), -i + 0.5);  // (row 0: the world, a null body)
+            if (k > 0) ball(b[i * grid_size + k], b[i * grid_size + k - 1], k - 0.5, double(-i));
+        }
+    return timed(grid_steps, [&](scene_result& out) {
+        o.step(h);
+        for (dJointID j : joints) {
+            dVector3 x, y;
+            dJointGetBallAnchor(j, x), dJointGetBallAnchor2(j, y);
+            const ctga::vec3<double> d{x[0] - y[0], x[1] - y[1], x[2] - y[2]};
+            out.joint_error = std::max(out.joint_error, std::sqrt(ctga::linear3::dot(d, d)));
+        }
+    });
+}
+#endif
+
 #ifdef CTGA_BENCH_MUJOCO
 // room for the scenes' constraints (MuJoCo 2.2's defaults hold a few thousand)
 constexpr const char* size_for_scenes = "<size njmax='400000' nconmax='200000' nstack='60000000'/>";
@@ -413,6 +469,10 @@ void register_all() {
         add("pyramid_work/bullet_" + std::to_string(n), [n] { return bullet_pyramid(small_base, small_steps, n); });
         add("pinch_work/bullet_" + std::to_string(n), [n] { return bullet_pinch(n); });
     }
+#endif
+#ifdef CTGA_BENCH_ODE
+    add("large_pyramid/ode", ode_pyramid);
+    add("joint_grid/ode", ode_grid);
 #endif
 #ifdef CTGA_BENCH_MUJOCO
     // (rows: the grid's 3 per joint; the pyramid's about 12 contact points per cube, 4 rows each with pyramidal cones)

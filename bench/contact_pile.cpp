@@ -11,15 +11,16 @@
 // ctga at tolerance 1e-6 and at most 100 sweeps a step; mixed_pile_work/ctga_<n> at n sweeps.
 // Counters: ms_per_step; penetration, the largest seen; speed, the fastest body's speed at the end
 // (the pile has come to rest when it is small).
-// Peers: Bullet (btSphereShape, btCapsuleShapeZ, btBoxShape, btConvexHullShape of the rock's
-// moved points with the rock's principal moments), MuJoCo (sphere, capsule, box and a mesh of the
-// rock's points, which MuJoCo moves to its principal frame itself).
+// Peers, given ctga's masses and principal moments: Bullet (btSphereShape, btCapsuleShapeZ,
+// btBoxShape, btConvexHullShape of the rock's moved points), ODE (sphere, capsule, box, and a
+// convex geom of the moved rock's faces).
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <ctga/collision/box.hpp>
 #include <ctga/collision/capsule.hpp>
@@ -159,6 +160,68 @@ scene_result bullet_pile() {
 }
 #endif
 
+#ifdef CTGA_BENCH_ODE
+// the rock as ODE's convex geom: its faces' planes (n, d), its points, its polygons (count, then
+// the corners, counter-clockwise from outside), kept for the geoms' lifetime
+struct ode_rock {
+    std::vector<dReal> planes, points;
+    std::vector<unsigned> polygons;
+};
+const ode_rock& rock_for_ode() {
+    static const ode_rock r = [] {
+        ode_rock out;
+        const rock_hull& hull = rock().shape;
+        for (std::size_t f = 0; f < hull.face_count; ++f) {
+            for (std::size_t c = 0; c < 3; ++c) out.planes.push_back(hull.face[f].normal[c]);
+            out.planes.push_back(hull.face[f].offset);
+            out.polygons.push_back(hull.face[f].count);
+            for (std::size_t k = 0; k < hull.face[f].count; ++k) out.polygons.push_back(hull.face_vertex[hull.face[f].first + k]);
+        }
+        for (std::size_t i = 0; i < hull.vertex_count; ++i)
+            for (std::size_t c = 0; c < 3; ++c) out.points.push_back(hull.vertex[i][c]);
+        return out;
+    }();
+    return r;
+}
+
+scene_result ode_pile() {
+    ode_world o;
+    o.mu = pile_friction;
+    for (const slab& s : container) {
+        dGeomID g = dCreateBox(o.space, 2 * s.half[0], 2 * s.half[1], 2 * s.half[2]);
+        dGeomSetPosition(g, s.at[0], s.at[1], s.at[2]);
+    }
+    const std::array<ctga::mass_properties<double>, 4> props{*collision::mass_of(*collision::make_sphere(ball_radius), pile_density),
+                                                             *collision::mass_of(*collision::make_capsule(pill_radius, pill_half), pile_density),
+                                                             *collision::mass_of(*collision::make_box(brick[0], brick[1], brick[2]), pile_density),
+                                                             *collision::mass_of(rock().shape, pile_density)};
+    const ode_rock& r = rock_for_ode();
+    std::vector<dBodyID> bodies;
+    for (int n = 0; n < pile_bodies; ++n) {
+        dGeomID g = nullptr;
+        switch (n % 4) {
+            case 0: g = dCreateSphere(o.space, ball_radius); break;
+            case 1: g = dCreateCapsule(o.space, pill_radius, 2 * pill_half); break;
+            case 2: g = dCreateBox(o.space, 2 * brick[0], 2 * brick[1], 2 * brick[2]); break;
+            default:
+                g = dCreateConvex(o.space, r.planes.data(), static_cast<unsigned>(r.planes.size() / 4), r.points.data(),
+                                  static_cast<unsigned>(r.points.size() / 3), r.polygons.data());
+                break;
+        }
+        const ctga::mass_properties<double>& q = props[n % 4];
+        const motor<double> pose = n % 4 == 3 ? motor<double>(pile_pose(n) * rock().frame) : pile_pose(n);
+        bodies.push_back(o.add(g, q.mass, {q.inertia_c[0][0], q.inertia_c[1][1], q.inertia_c[2][2]}, ctga::map_of(pose)));
+    }
+    scene_result out = timed(pile_steps, [&](scene_result&) { o.step(h); });
+    for (dBodyID b : bodies) {
+        const dReal* v = dBodyGetLinearVel(b);
+        out.speed = std::max(out.speed, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    }
+    out.penetration = o.deepest;
+    return out;
+}
+#endif
+
 }  // namespace
 
 namespace bench {
@@ -169,6 +232,9 @@ void register_pile() {
         add_scene("mixed_pile_work/ctga_" + std::to_string(sweeps), [sweeps] { return ctga_pile(sweeps, 1); });
 #ifdef CTGA_BENCH_BULLET
     add_scene("mixed_pile/bullet", bullet_pile);
+#endif
+#ifdef CTGA_BENCH_ODE
+    add_scene("mixed_pile/ode", ode_pile);
 #endif
 }
 }  // namespace bench

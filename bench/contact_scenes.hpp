@@ -19,6 +19,9 @@
 #ifdef CTGA_BENCH_BULLET
 #include <btBulletDynamicsCommon.h>
 #endif
+#ifdef CTGA_BENCH_ODE
+#include <ode/ode.h>
+#endif
 #ifdef CTGA_BENCH_MUJOCO
 #include <cstdio>
 
@@ -117,6 +120,65 @@ struct bullet_world {
             for (int c = 0; c < m->getNumContacts(); ++c) deepest = std::max(deepest, -double(m->getContactPoint(c).getDistance()));
         }
         return deepest;
+    }
+};
+#endif
+
+#ifdef CTGA_BENCH_ODE
+// ODE 0.16 (double precision) at its defaults: dWorldQuickStep (20 iterations, ERP 0.2, CFM 1e-5),
+// a hash space, up to 8 contact points a pair, each a contact joint with Coulomb friction μ
+// scaled by the normal force (dContactApprox1: ODE's friction pyramid).
+struct ode_world {
+    dWorldID world;
+    dSpaceID space;
+    dJointGroupID contacts;
+    double mu = 0.6, deepest = 0;
+    explicit ode_world(double gx = 0, double gy = -gravity, double gz = 0) {
+        dInitODE2(0);
+        world = dWorldCreate();
+        space = dHashSpaceCreate(nullptr);
+        contacts = dJointGroupCreate(0);
+        dWorldSetGravity(world, gx, gy, gz);
+    }
+    ode_world(const ode_world&) = delete;
+    ode_world& operator=(const ode_world&) = delete;
+    ~ode_world() {
+        dJointGroupDestroy(contacts);
+        dSpaceDestroy(space);
+        dWorldDestroy(world);
+        dCloseODE();
+    }
+    // a body of mass m and principal moments at a pose, its geom (if any) attached
+    dBodyID add(dGeomID geom, double m, const ctga::vec3<double>& moments, const ctga::motor_map<double>& at) {
+        dBodyID b = dBodyCreate(world);
+        dMass mass;
+        dMassSetParameters(&mass, m, 0, 0, 0, moments[0], moments[1], moments[2], 0, 0, 0);
+        dBodySetMass(b, &mass);
+        dMatrix3 R;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 4; ++j) R[4 * i + j] = j < 3 ? at.R[i][j] : 0.0;
+        dBodySetRotation(b, R);
+        dBodySetPosition(b, at.t[0], at.t[1], at.t[2]);
+        if (geom) dGeomSetBody(geom, b);
+        return b;
+    }
+    static void near(void* self, dGeomID a, dGeomID b) {
+        auto& w = *static_cast<ode_world*>(self);
+        dBodyID ba = dGeomGetBody(a), bb = dGeomGetBody(b);
+        if (!ba && !bb) return;
+        dContact c[8];
+        const int n = dCollide(a, b, 8, &c[0].geom, sizeof(dContact));
+        for (int i = 0; i < n; ++i) {
+            c[i].surface.mode = dContactApprox1;
+            c[i].surface.mu = w.mu;
+            w.deepest = std::max(w.deepest, double(c[i].geom.depth));
+            dJointAttach(dJointCreateContact(w.world, w.contacts, &c[i]), ba, bb);
+        }
+    }
+    void step(double dt) {
+        dSpaceCollide(space, this, &near);
+        dWorldQuickStep(world, dt);
+        dJointGroupEmpty(contacts);
     }
 };
 #endif

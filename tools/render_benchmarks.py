@@ -381,7 +381,7 @@ def contact_section(contact_json, img_dir):
            "penetration, the largest joint gap, the fastest body's speed at the end (a pile at rest: small). mixed_pile: 1,000",
            "spheres, capsules, boxes and hulls (centre of mass off their points' origin) dropped into a box, 300 steps.",
            "ctga at a tolerance of 1e-6 on the natural-map residual and at most 100",
-           "sweeps a step (`<scene>_work`: n sweeps); Bullet 3.24 and MuJoCo 2.2.2 at their defaults.", ""]
+           "sweeps a step (`<scene>_work`: n sweeps); Bullet 3.24, MuJoCo 2.2.2 and ODE 0.16 at their defaults.", ""]
     def bullet_of(scene):  # <scene>_work rows against <scene>'s Bullet row
         entries = rows.get(scene.removesuffix("_work"), [])
         return next((b.get("ms_per_step") for impl, b in entries if impl == "bullet" and not b.get("error_occurred")), None)

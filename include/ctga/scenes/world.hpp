@@ -118,7 +118,7 @@ struct world_settings {
     std::size_t partitions = 1;          // parts the sweeps split the bodies into (1 … 64, a larger number is taken
                                          // as 64): the results depend on it, not on the threads; one part sweeps in
                                          // row order, which converges best (joint_grid, 4 sweeps: joint gap 6.2 cm
-                                         // with one part, 2.5 m with two), more let threads share the sweeps
+                                         // with one part, 2.2 m with two slabs), more let threads share the sweeps
     std::size_t parallel_rows = 2048;    // fewer rows are swept by the caller's thread alone (the same schedule, the
                                          // same results: a fork and join costs more than a sweep of a few hundred rows)
     std::size_t polish_limit = 64;       // sweeps short of the tolerance are finished by Newton

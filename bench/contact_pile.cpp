@@ -13,7 +13,8 @@
 // (the pile has come to rest when it is small).
 // Peers, given ctga's masses and principal moments: Bullet (btSphereShape, btCapsuleShapeZ,
 // btBoxShape, btConvexHullShape of the rock's moved points), ODE (sphere, capsule, box, and a
-// convex geom of the moved rock's faces).
+// convex geom of the moved rock's faces); MuJoCo with its own (its shapes at the density, the
+// rock a mesh).
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -222,6 +223,52 @@ scene_result ode_pile() {
 }
 #endif
 
+#ifdef CTGA_BENCH_MUJOCO
+// free bodies with MuJoCo's own shapes (a capsule along its z, as ctga's), the rock a mesh of its
+// points as given (MuJoCo moves a mesh to its principal frame itself); its defaults otherwise.
+// Buffers: 3,000 rows, 1,500 contacts and 200 million numbers of stack, about the most its
+// mjData holds here (a 32-bit size: the dense Jacobian, njmax × nv numbers, twice, njmax² more,
+// and a stack its Newton solver fills with nv² = 36 million numbers and more: 10,000 rows could
+// not be allocated, 4,500 rows with 160 million numbers of stack overflowed it, measured); a run
+// that fills the buffers says so.
+scene_result mujoco_pile() {
+    std::ostringstream x;
+    x << "<mujoco><option timestep='" << h << "' gravity='0 " << -gravity << " 0'/>"
+      << "<size njmax='3000' nconmax='1500' nstack='200000000'/>"
+      << "<default><geom friction='" << pile_friction << " 0.005 0.0001' density='" << pile_density << "'/></default><asset><mesh name='rock' vertex='";
+    for (const ctga::vec3<double>& p : rock_points) x << p[0] << ' ' << p[1] << ' ' << p[2] << ' ';
+    x << "'/></asset><worldbody>";
+    for (const slab& s : container)
+        x << "<geom type='box' size='" << s.half[0] << ' ' << s.half[1] << ' ' << s.half[2] << "' pos='" << s.at[0] << ' ' << s.at[1] << ' ' << s.at[2] << "'/>";
+    for (int n = 0; n < pile_bodies; ++n) {
+        const motor<double> g = pile_pose(n);
+        const ctga::vec3<double> t = ctga::map_of(g).t;
+        x << "<body pos='" << t[0] << ' ' << t[1] << ' ' << t[2] << "' quat='" << g[0] << ' ' << g[1] << ' ' << g[2] << ' ' << g[3] << "'><freejoint/>";
+        switch (n % 4) {
+            case 0: x << "<geom type='sphere' size='" << ball_radius << "'/>"; break;
+            case 1: x << "<geom type='capsule' size='" << pill_radius << ' ' << pill_half << "'/>"; break;
+            case 2: x << "<geom type='box' size='" << brick[0] << ' ' << brick[1] << ' ' << brick[2] << "'/>"; break;
+            default: x << "<geom type='mesh' mesh='rock'/>"; break;
+        }
+        x << "</body>";
+    }
+    x << "</worldbody></mujoco>";
+    mujoco_scene s(x.str());
+    scene_result r = timed(pile_steps, [&](scene_result& out) {
+        mj_step(s.m, s.d);
+        out.penetration = std::max(out.penetration, s.penetration());
+    });
+    for (int b = 0; b < pile_bodies; ++b) {  // (a free joint's linear velocity first)
+        const double* v = s.d->qvel + 6 * b;
+        r.speed = std::max(r.speed, std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]));
+    }
+    if (s.d->warning[mjWARN_CONTACTFULL].number > 0 || s.d->warning[mjWARN_CNSTRFULL].number > 0)
+        r.failed = "MuJoCo 2.2.2 dropped contacts: its buffers (nconmax " + std::to_string(s.m->nconmax) + ", njmax " + std::to_string(s.m->njmax) +
+                   ") filled, and larger ones do not fit its mjData beside its Newton solver's stack (a 32-bit size)";
+    return r;
+}
+#endif
+
 }  // namespace
 
 namespace bench {
@@ -232,6 +279,9 @@ void register_pile() {
         add_scene("mixed_pile_work/ctga_" + std::to_string(sweeps), [sweeps] { return ctga_pile(sweeps, 1); });
 #ifdef CTGA_BENCH_BULLET
     add_scene("mixed_pile/bullet", bullet_pile);
+#endif
+#ifdef CTGA_BENCH_MUJOCO
+    add_scene("mixed_pile/mujoco", mujoco_pile);
 #endif
 #ifdef CTGA_BENCH_ODE
     add_scene("mixed_pile/ode", ode_pile);

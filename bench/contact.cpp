@@ -95,11 +95,11 @@ using spherical = ctga::spherical_joint<double>;
 
 
 scene_result ctga_pyramid(std::size_t sweeps, std::size_t threads = 1, int base = pyramid_base, int steps = pyramid_steps,
-                          double tolerance = 1e-6) {
+                          double tolerance = 1e-6, std::size_t substeps = 0) {
     const std::size_t n = static_cast<std::size_t>(base * (base + 1) / 2);
     auto w = std::make_unique<ctga::physics_world<double, collision::box<double>, cube>>(
         std::array<std::size_t, 1>{n}, ctga::world_capacity{.statics = 1, .contacts = 16 * n, .pairs = 8 * n},
-        ctga_settings(sweeps, threads, tolerance));
+        ctga_settings(sweeps, threads, tolerance, substeps));
     w->add_static(*collision::make_box(400.0, 1.0, 400.0), motor<double>(ctga::make_translator(0.0, -1.0, 0.0)), {friction, 0.0});
     const auto box = *collision::make_box(cube_half, cube_half, cube_half);
     for (int i = 0; i < base; ++i)
@@ -119,11 +119,11 @@ scene_result ctga_pyramid(std::size_t sweeps, std::size_t threads = 1, int base 
     return r;
 }
 
-scene_result ctga_grid(std::size_t sweeps, std::size_t threads = 1) {
+scene_result ctga_grid(std::size_t sweeps, std::size_t threads = 1, std::size_t substeps = 0) {
     constexpr std::size_t n = (grid_size - 1) * grid_size;
     auto w = std::make_unique<ctga::physics_world<double, collision::half_space<double>, ball>>(
         std::array<std::size_t, 1>{n}, ctga::world_capacity{.statics = 0, .contacts = 16, .pairs = 16, .joints = 2 * n},
-        ctga_settings(sweeps, threads));
+        ctga_settings(sweeps, threads, 1e-6, substeps));
     collision::filter none;
     none.group = -1;  // the spheres do not collide
     const auto sphere = *collision::make_sphere(sphere_radius);
@@ -145,8 +145,9 @@ scene_result ctga_grid(std::size_t sweeps, std::size_t threads = 1) {
 }
 
 // the box (body 0) between the fingers (1 and 2), with no ground
-scene_result ctga_pinch(double tolerance) {
+scene_result ctga_pinch(double tolerance, std::size_t substeps = 0) {
     ctga::world_settings<double> set;
+    set.substeps = substeps;
     set.gravity = {0.0, 0.0, -gravity};
     set.solver.tolerance = tolerance;
     set.solver.max_sweeps = 100000;
@@ -462,6 +463,12 @@ void register_all() {
         add("pyramid_work/ctga_" + std::to_string(sweeps), [sweeps] { return ctga_pyramid(sweeps, 1, small_base, small_steps); });
     for (const int e : {2, 4, 6, 10})
         add("pinch_work/ctga_tol_" + std::to_string(e), [e] { return ctga_pinch(std::pow(10.0, -e)); });
+    // the soft step (constraints/soft_step.hpp): n substeps of two sweeps, no tolerance
+    add("large_pyramid_work/ctga_soft_4", [] { return ctga_pyramid(0, 1, pyramid_base, pyramid_steps, 1e-6, 4); });
+    add("joint_grid_work/ctga_soft_4", [] { return ctga_grid(0, 1, 4); });
+    for (const std::size_t n : {4, 8})
+        add("pyramid_work/ctga_soft_" + std::to_string(n), [n] { return ctga_pyramid(0, 1, small_base, small_steps, 1e-6, n); });
+    add("pinch_work/ctga_soft_4", [] { return ctga_pinch(1e-6, 4); });
 #ifdef CTGA_BENCH_BULLET
     add("large_pyramid/bullet", [] { return bullet_pyramid(); });
     add("joint_grid/bullet", bullet_grid);

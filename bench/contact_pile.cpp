@@ -87,11 +87,11 @@ using pile_world = ctga::physics_world<double, collision::box<double>, ball, pil
 
 double linear_speed(const ctga::screw<double>& s) { return std::sqrt(s[3] * s[3] + s[4] * s[4] + s[5] * s[5]); }
 
-scene_result ctga_pile(std::size_t sweeps, std::size_t threads) {
+scene_result ctga_pile(std::size_t sweeps, std::size_t threads, std::size_t substeps = 0) {
     constexpr std::size_t quarter = pile_bodies / 4;
     auto w = std::make_unique<pile_world>(std::array<std::size_t, 4>{quarter, quarter, quarter, quarter},
                                           ctga::world_capacity{.statics = 5, .contacts = 24 * pile_bodies, .pairs = 16 * pile_bodies},
-                                          ctga_settings(sweeps, threads));
+                                          ctga_settings(sweeps, threads, 1e-6, substeps));
     for (const slab& s : container)
         w->add_static(*collision::make_box(s.half[0], s.half[1], s.half[2]), motor<double>(ctga::make_translator(s.at[0], s.at[1], s.at[2])),
                       {pile_friction, 0.0});
@@ -277,6 +277,7 @@ void register_pile() {
     add_scene("mixed_pile/ctga_2threads", [] { return ctga_pile(100, 2); });
     for (const std::size_t sweeps : {10, 30})
         add_scene("mixed_pile_work/ctga_" + std::to_string(sweeps), [sweeps] { return ctga_pile(sweeps, 1); });
+    add_scene("mixed_pile_work/ctga_soft_4", [] { return ctga_pile(0, 1, 4); });  // the soft step, 4 substeps
 #ifdef CTGA_BENCH_BULLET
     add_scene("mixed_pile/bullet", bullet_pile);
 #endif

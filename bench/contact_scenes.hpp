@@ -61,7 +61,8 @@ scene_result timed(int steps, Run&& run) {
     return r;
 }
 
-inline ctga::world_settings<double> ctga_settings(std::size_t sweeps, std::size_t threads = 1, double tolerance = 1e-6) {
+// substeps > 0: the soft step (constraints/soft_step.hpp) with that many substeps, sweeps unused
+inline ctga::world_settings<double> ctga_settings(std::size_t sweeps, std::size_t threads = 1, double tolerance = 1e-6, std::size_t substeps = 0) {
     ctga::world_settings<double> s;
     s.threads = threads;
     s.partitions = threads;  // one part per thread (one thread and two parts give the same numbers as two threads)
@@ -69,6 +70,7 @@ inline ctga::world_settings<double> ctga_settings(std::size_t sweeps, std::size_
     s.solver.tolerance = tolerance;
     s.solver.max_sweeps = sweeps;
     s.solver.check_every = 4;
+    s.substeps = substeps;
     return s;
 }
 

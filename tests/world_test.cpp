@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <vector>
 
 #include <ctga/collision/box.hpp>
@@ -507,10 +508,12 @@ TEST_CASE("world: on a soft surface (§7's K and D as a contact compliance) a bo
         c.stiffness[0][0] = c.stiffness[1][1] = c.stiffness[2][2] = 1.0;  // (rotation blocks: a point contact has no rows for them)
         return c;
     };
-    {
+    // (and in the soft step, constraints/soft_step.hpp: at rest c r_n + b = 0 there too)
+    for (const std::size_t substeps : {0, 4}) {
         const double k = 1e5, m = 100.0, omega = std::sqrt(4 * k / m), d = m * omega / 2;  // critical for the four corners together
         ctga::physics_world<double, collision::box<double>, cube> w({1}, {.statics = 1, .contacts = 16, .pairs = 4});
         w.settings().solver.tolerance = 1e-13;
+        w.settings().substeps = substeps;
         const motor<double> turned = ctga::make_translator(0.0, 0.0, -0.5) * ctga::make_rotor(std::acos(-1.0) / 2, 1.0, 0.0, 0.0);
         REQUIRE(w.add_static(*collision::make_box(5.0, 0.5, 5.0), turned, {0.6, 0.0}));
         REQUIRE(w.set_compliance(0, compliance({7 * k, k, 9 * k}, {7 * d, d, 9 * d})) == ctga::error_code::none);
@@ -639,13 +642,69 @@ TEST_CASE("world: a box pinched between two fingers holds when μF > mg/2 and sl
     }
 }
 
+TEST_CASE("world: the soft step: a box rests g/ω² deep, a hanging box stretches its joint g/(2ω)², a block slides at g (sin θ − μ cos θ)") {
+    // (constraints/soft_step.hpp: at rest u = 0 and Δr = 0 give m_eff σ β C = −τ r with r = m g h_s
+    // shared by points of equal gaps; τ h_s / (σ β) = 1/ω², so C = −g/ω² whatever the mass, for
+    // a box on its four corners (W_nn r_i = g h_s: the corner's arm × n meets I⁻¹ as 3/m does) and a
+    // body hanging under its joint (arm ∥ r: A r = r / m); the joints' springs are twice as fast)
+    constexpr std::size_t n = 4;
+    const double omega = 2 * std::numbers::pi * 0.25 * n / h;  // a quarter of the substeps' rate
+    {
+        ctga::physics_world<double, plane, cube> w({2}, {.statics = 1, .contacts = 16, .pairs = 4, .joints = 1});
+        w.settings().substeps = n;
+        REQUIRE(w.add_static(plane{}, motor<double>(ctga::make_translator(0.0, 0.0, 0.0)), {0.6, 0.0}));
+        const auto box = *collision::make_box(0.5, 0.5, 0.5);
+        REQUIRE(w.add_body<0>(box, 100.0, motor<double>(ctga::make_translator(0.0, 0.0, 0.5))));
+        REQUIRE(w.add_body<0>(box, 300.0, motor<double>(ctga::make_translator(5.0, 0.0, 3.0))));  // hanging from (5, 0, 4)
+        REQUIRE(w.add_joint(spherical{ctga::body<0>(1), ctga::ground, {0.0, 0.0, 1.0}, {5.0, 0.0, 4.0}}));
+        ctga::step_report<double> r;
+        for (int k = 0; k < 300; ++k) REQUIRE((r = w.step(h)).error == ctga::error_code::none);
+        CHECK(r.contacts == 4);
+        CHECK(std::isnan(r.contact.residual));  // the soft step measures none
+        CHECK(std::abs(r.penetration * omega * omega / g - 1) <= 1e-9);
+        CHECK(std::abs(centre(w.pose<0>(0))[2] - (0.5 - g / (omega * omega))) <= 1e-12);
+        CHECK(std::abs((4.0 - centre(w.pose<0>(1))[2] - 1.0) * 4 * omega * omega / g - 1) <= 1e-9);
+        CHECK(std::abs(r.joint_error * 4 * omega * omega / g - 1) <= 1e-9);
+        // the weight over the step, on the ground (side b): the body (side a) is held up by its opposite
+        CHECK(std::abs(w.joint_impulse(0)[2] + w.body<0>(1).m() * g * h) <= 1e-9 * w.body<0>(1).m() * g * h);
+    }
+    {
+        const double theta = 0.3, mu = 0.2, a = g * (std::sin(theta) - mu * std::cos(theta));
+        incline s(theta, mu);
+        s.w.settings().substeps = n;
+        for (int k = 0; k < 60; ++k) REQUIRE(s.w.step(h).error == ctga::error_code::none);  // (settled on its springs)
+        double v_before = speed(s.w.velocity<0>(0)), worst = 0;
+        for (int k = 0; k < 540; ++k) {
+            REQUIRE(s.w.step(h).error == ctga::error_code::none);
+            const double v = speed(s.w.velocity<0>(0));
+            worst = std::max(worst, std::abs((v - v_before) / h - a) / a);
+            v_before = v;
+        }
+        CHECK(worst <= 1e-9);
+    }
+    {
+        ctga::physics_world<double, plane, cube> w({1}, {.statics = 1, .contacts = 16, .pairs = 4});
+        w.settings().substeps = n;
+        REQUIRE(w.add_static(plane{}, motor<double>(ctga::make_translator(0.0, 0.0, 0.0))));
+        REQUIRE(w.add_body<0>(*collision::make_box(0.5, 0.5, 0.5), 100.0, motor<double>(ctga::make_translator(0.0, 0.0, 0.5))));
+        w.settings().contact_hertz = std::numeric_limits<double>::quiet_NaN();
+        CHECK(w.step(h).error == ctga::error_code::non_finite);
+        w.settings().contact_hertz = 0, w.settings().push_speed = 0;
+        CHECK(w.step(h).error == ctga::error_code::negative_limit);
+        w.settings().push_speed = 3, w.settings().contact_damping = -1;
+        CHECK(w.step(h).error == ctga::error_code::negative_limit);
+    }
+}
+
 TEST_CASE("world: the same state, bit for bit, with one thread and with two, run after run") {
     // (300 steps: 1,000 took 22 s of this unit at -Og with two threads, for no more of the code)
     // a pyramid of 21 cubes and a chain of 6 spheres on spherical joints swinging into it: two body
     // kinds, contacts and joints in one problem, more rows than Newton's limit (the sweeps run)
-    const auto run = [](std::size_t threads) {
+    // (and the soft step: constraints/soft_step.hpp)
+    const auto run = [](std::size_t threads, std::size_t substeps = 0) {
         ctga::world_settings<double> set;
         set.threads = threads;
+        set.substeps = substeps;
         set.partitions = 2;
         set.parallel_rows = 0;  // the team sweeps however few rows there are
         set.solver.tolerance = 1e-9;
@@ -681,6 +740,9 @@ TEST_CASE("world: the same state, bit for bit, with one thread and with two, run
     CHECK(run(2) == one);
     CHECK(run(1) == one);
     CHECK(run(2) == one);
+    const std::uint64_t soft = run(1, 4);
+    CHECK(soft != one);
+    CHECK(run(2, 4) == soft);
 }
 
 TEST_CASE("world: bad input is refused, a step that goes non-finite keeps the last good state") {

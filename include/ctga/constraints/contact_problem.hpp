@@ -235,11 +235,10 @@ template <class T>
 [[nodiscard]] constexpr std::array<T, 2> step_lengths(const mat3<T>& A) noexcept {
     return {T(1) / A[0][0], T(2) / (A[1][1] + A[2][2])};
 }
+// The tangential half, at the new normal impulse rn (the soft step's too: soft_step.hpp).
 template <class T>
-[[nodiscard]] constexpr vec3<T> projected_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r,
-                                               const std::array<T, 2>& length) noexcept {
-    T rn = r[0] - u[0] * length[0];
-    rn = rn > T(0) ? rn : T(0);
+[[nodiscard]] constexpr vec3<T> friction_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r, const T& rn,
+                                              const std::array<T, 2>& length) noexcept {
     const T dn = rn - r[0];
     T t1 = r[1] - (u[1] + A[1][0] * dn) * length[1], t2 = r[2] - (u[2] + A[2][0] * dn) * length[1];
     const T squared = t1 * t1 + t2 * t2, limit = mu * rn;
@@ -248,6 +247,12 @@ template <class T>
         t1 *= s, t2 *= s;
     }
     return {rn, t1, t2};
+}
+template <class T>
+[[nodiscard]] constexpr vec3<T> projected_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r,
+                                               const std::array<T, 2>& length) noexcept {
+    const T rn = r[0] - u[0] * length[0];
+    return friction_step(A, u, mu, r, rn > T(0) ? rn : T(0), length);
 }
 template <class D>
 [[nodiscard]] constexpr auto step_lengths_of(const D& W, std::size_t i) noexcept {

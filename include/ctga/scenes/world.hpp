@@ -30,7 +30,10 @@
 //   solve           the frictional contact problem to the settings' tolerance
 //                   (constraints/contact_problem.hpp), then the normal-only problem of position
 //                   correction on pseudo-velocities
-//   integrate       poses from the velocities
+//   soft_solve      instead of solve when settings.substeps > 0: the soft step
+//                   (constraints/soft_step.hpp), cheaper, to no tolerance (the step below is the
+//                   exact way's; the soft step's impulses are a substep's)
+//   integrate       poses from the velocities (the soft step's: from the displacements)
 //   store_impulses  the impulses by contact, sorted, for the next warm start
 //
 // Time stepping (Moreau–Jean with θ = ½ for positions): velocities jump to s⁺ = s_free + N⁻¹ Jᵀ r,
@@ -61,6 +64,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <memory_resource>
 #include <tuple>
 #include <type_traits>
@@ -76,6 +80,7 @@
 #include "ctga/constraints/contact_rows.hpp"
 #include "ctga/constraints/joint_rows.hpp"
 #include "ctga/constraints/newton_polish.hpp"
+#include "ctga/constraints/soft_step.hpp"
 #include "ctga/mechanics/mass_properties.hpp"
 #include "ctga/mechanics/motor.hpp"
 #include "ctga/scenes/body_kinds.hpp"
@@ -123,6 +128,13 @@ struct world_settings {
                                          // same results: a fork and join costs more than a sweep of a few hundred rows)
     std::size_t polish_limit = 64;       // sweeps short of the tolerance are finished by Newton
                                          // (newton_polish.hpp) on problems of at most this many contacts
+    // The soft step instead (constraints/soft_step.hpp) when substeps > 0: that many substeps of two
+    // sweeps each, the gaps springs; no tolerance, no residual (NaN in the report), no correction
+    std::size_t substeps = 0;
+    T contact_hertz = T(0);  // the contacts' springs: at most a quarter of the substeps' rate, that when 0
+                             // (Box2D's limit; measured, the stiffest stood best); the joints' twice it
+    T contact_damping = T(10), joint_damping = T(2);  // their damping ratios
+    T push_speed = T(3);                              // the fastest a contact's spring pushes out (m/s)
 };
 
 struct world_capacity {
@@ -277,7 +289,7 @@ public:
                                std::pmr::vector<typename Kinds::inertia_type::template data<T>>(storage)}...},
           total_(sum(bodies)),
           pose_(total_, storage), before_pose_(total_, storage), map_(total_, storage), velocity_(total_, storage),
-          before_(total_, storage), pseudo_(total_, storage), force_(total_, storage), torque_(total_, storage), mobility_(total_, storage), material_(total_, storage),
+          before_(total_, storage), pseudo_(total_, storage), displacement_(total_, storage), free_(total_, storage), force_(total_, storage), torque_(total_, storage), mobility_(total_, storage), material_(total_, storage),
           reach_(total_, storage), radius_(total_, storage), box_(total_, storage), proxy_(total_, storage), static_shape_(storage),
           static_pose_(capacity.statics, storage), static_map_(capacity.statics, storage), static_velocity_(capacity.statics, storage),
           static_box_(capacity.statics, storage), static_material_(capacity.statics, storage),
@@ -286,7 +298,7 @@ public:
           by_key_(capacity.contacts, storage), first_of_body_(total_ + 1, storage), stored_from_(rows_for(capacity), storage), rows_(rows_for(capacity), storage),
           keys_(rows_for(capacity), storage), separation_(rows_for(capacity), storage), before_normal_(rows_for(capacity), storage),
           surface_(rows_for(capacity), storage),
-          impulse_(3 * rows_for(capacity), storage), correction_(3 * rows_for(capacity), storage), mu_(rows_for(capacity), storage), arm_(rows_for(capacity), storage), stored_(capacity.contacts, storage),
+          impulse_(3 * rows_for(capacity), storage), correction_(3 * rows_for(capacity), storage), mu_(rows_for(capacity), storage), restitution_(rows_for(capacity), storage), spring_rate_(rows_for(capacity), storage), arm_(rows_for(capacity), storage), gap_(rows_for(capacity), storage), stored_(capacity.contacts, storage),
           conjugate_(6 * rows_for(capacity), storage), dense_(9 * settings.polish_limit * settings.polish_limit + 6 * settings.polish_limit, storage),
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
           joints_(3 * capacity.joints, storage), joint_impulse_(3 * capacity.joints, storage), joint_error_(3 * capacity.joints, storage),
@@ -466,13 +478,20 @@ public:
     step_report<T> step(const T& h) noexcept {
         step_report<T> report;
         if (!is_finite(h) || !(h > T(0))) return report.error = error_code::non_finite, report;
+        if (settings_.substeps > 0) {
+            const world_settings<T>& s = settings_;
+            if (!all_finite(s.contact_hertz, s.contact_damping, s.joint_damping, s.push_speed)) return report.error = error_code::non_finite, report;
+            if (s.contact_hertz < T(0) || s.contact_damping < T(0) || s.joint_damping < T(0) || !(s.push_speed > T(0)))
+                return report.error = error_code::negative_limit, report;
+        }
         for_each_body([&](auto&, std::size_t, std::size_t b) { before_pose_[b] = pose_[b], before_[b] = velocity_[b]; });
         if ((report.error = collide(h)) != error_code::none) return report;
         order_manifolds();
         if ((report.error = build_rows(h, report)) != error_code::none) return report;
         partition();
         warm_start();
-        solve(h, report);
+        if (settings_.substeps > 0) soft_solve(h, report);
+        else solve(h, report);
         integrate(h);
         if (!state_finite()) {
             for_each_body([&](auto&, std::size_t, std::size_t b) { pose_[b] = before_pose_[b], velocity_[b] = before_[b]; });
@@ -623,12 +642,17 @@ public:
                 const bool closing = phi + h * (before + free) / T(2) <= T(0);
                 row.bias = k;
                 row.compliance = T(0);
-                if (fixed && static_soft_[s]) {  // a spring and a damper along n (couplings.hpp)
-                    const soft_row<T> soft = soften(static_softness_[s], linear3::apply_transposed(static_map_[s].R, fm.m.normal), phi, h);
+                spring_rate_[contacts_] = T(0);
+                if (fixed && static_soft_[s]) {  // a spring and a damper along n (couplings.hpp), over a substep in the soft step
+                    const vec3<T> n = linear3::apply_transposed(static_map_[s].R, fm.m.normal);
+                    const T over = settings_.substeps > 0 ? h / T(settings_.substeps) : h;
+                    const soft_row<T> soft = soften(static_softness_[s], n, phi, over);
                     row.block[0][0] += soft.compliance, row.bias[0] += soft.offset, row.compliance = soft.compliance;
-                } else {
+                    spring_rate_[contacts_] = soften(static_softness_[s], n, T(1), over).offset;  // b / φ
+                } else if (settings_.substeps == 0) {
                     row.bias[0] += closing ? (before < -settings_.restitution_threshold ? e * before : T(0)) : before + T(2) * phi / h;
                 }
+                restitution_[contacts_] = closing && before < -settings_.restitution_threshold ? e : T(0);
                 row.step_length = constraints::step_lengths(row.block);
                 separation_[contacts_] = phi, before_normal_[contacts_] = before, surface_[contacts_] = k[0];
                 arm_[contacts_] = linear3::sub(x, map_[fm.a].t);
@@ -732,7 +756,9 @@ public:
                 for (std::size_t k = 0; k < 3; ++k) r[k] = linear3::dot(rows_[c].direction[k], match->r);
             for (std::size_t k = 0; k < 3; ++k) impulse_[3 * c + k] = r[k];
         });
-        // applied part by part (rows of one part share no body with another's)
+        // applied part by part (rows of one part share no body with another's); the soft step
+        // applies them at each substep
+        if (settings_.substeps > 0) return;
         const constraints::sweep_schedule<T> plan = schedule();
         constraints::for_each_row(&plan, contacts_, [&](std::size_t c) {
             W.apply(c, vec3<T>{impulse_[3 * c], impulse_[3 * c + 1], impulse_[3 * c + 2]});
@@ -816,6 +842,64 @@ public:
             polish(P, shift, report.correction);
     }
 
+    // The soft step (constraints/soft_step.hpp): n substeps, each the free velocity's share, the
+    // warm start, a sweep with the springs, the displacements moved on, a sweep without; then
+    // Newton's impact law once, u⁺_n ≥ −e u⁻_n, for the rows that close fast enough to bounce.
+    void soft_solve(const T& h, step_report<T>& report) noexcept {
+        const std::size_t n = settings_.substeps;
+        const T hs = h / T(n), quarter = T(0.25) / hs;
+        const T hertz = settings_.contact_hertz > T(0) && settings_.contact_hertz < quarter ? settings_.contact_hertz : quarter;
+        constraints::soft_sweep_settings<T> s{constraints::make_soft(hertz, settings_.contact_damping, hs),
+                                              constraints::make_soft(T(2) * hertz, settings_.joint_damping, hs), settings_.push_speed, hs, false};
+        for_each_body_at_once([&](auto&, std::size_t, std::size_t b) {
+            for (std::size_t c = 0; c < 6; ++c) free_[b][c] = (velocity_[b][c] - before_[b][c]) / T(n);
+            velocity_[b] = before_[b], displacement_[b] = screw<T>{};
+        });
+        constraints::rows_delassus<T> W{rows(), mobilities(), velocities()};
+        const std::span<const T> mu(mu_.data(), contacts_);
+        const std::span<T> r(impulse_.data(), 3 * contacts_);
+        const constraints::sweep_schedule<T> plan = schedule();
+        T elapsed = T(0);
+        // a row's gaps now: at the step's start, plus its lines paired with the displacements (and a
+        // kinematic surface's own motion: a contact row's tangential biases are its surface's speed).
+        // Measured in the relaxing sweep, just after the positions moved, and kept for the next
+        // substep's first sweep (the positions do not move between).
+        at_once(contacts_, [&](std::size_t i) { gap_[i] = i < blocks_ ? joint_error_[i] : vec3<T>{separation_[i], T(0), T(0)}; });
+        const auto gap = [&](std::size_t i) {
+            if (!s.relax) return gap_[i];
+            const vec3<T> surface = i < blocks_ ? vec3<T>{} : vec3<T>{surface_[i], rows_[i].bias[1], rows_[i].bias[2]};
+            const vec3<T> moved = linear3::add_scaled(
+                constraints::row_velocity(rows_[i], std::span<const screw<T>>(displacement_.data(), total_)), elapsed, surface);
+            gap_[i] = i < blocks_ ? linear3::add(joint_error_[i], moved) : vec3<T>{separation_[i] + moved[0], moved[1], moved[2]};
+            if (i >= blocks_ && rows_[i].compliance > T(0)) rows_[i].bias[0] = surface_[i] + spring_rate_[i] * gap_[i][0];  // b = k C / (h_s k + d)
+            return gap_[i];
+        };
+        for (std::size_t k = 0; k < n; ++k) {
+            for_each_body_at_once([&](auto&, std::size_t, std::size_t b) { velocity_[b] = screw<T>(velocity_[b] + free_[b]); });
+            constraints::for_each_row(&plan, contacts_, [&](std::size_t c) {
+                W.apply(c, vec3<T>{impulse_[3 * c], impulse_[3 * c + 1], impulse_[3 * c + 2]});
+            });
+            s.relax = false;
+            constraints::soft_sweep<T>(W, mu, r, gap, s, &plan);
+            for_each_body_at_once([&](auto&, std::size_t, std::size_t b) {
+                for (std::size_t c = 0; c < 6; ++c) displacement_[b][c] += hs * velocity_[b][c];
+            });
+            elapsed += hs;
+            s.relax = true;
+            constraints::soft_sweep<T>(W, mu, r, gap, s, &plan);
+        }
+        constraints::for_each_row(&plan, contacts_, [&](std::size_t c) {
+            if (c < blocks_ || restitution_[c] == T(0) || impulse_[3 * c] == T(0)) return;
+            const T u = W.velocity(c, r)[0];
+            const T rn = std::max(impulse_[3 * c] - (u + restitution_[c] * before_normal_[c]) * rows_[c].step_length[0], T(0));
+            W.apply(c, vec3<T>{rn - impulse_[3 * c], T(0), T(0)});
+            impulse_[3 * c] = rn;
+        });
+        report.contact.sweeps = 2 * n;
+        report.contact.residual = std::numeric_limits<T>::quiet_NaN();
+        report.contact.converged = false;
+    }
+
     // Newton on the problem held densely: W_ij = Σ over the bodies contacts i and j share of
     // ± L_i(N⁻¹ L_j), q = u − W r at the impulses r the sweeps reached (the step's, or the
     // correction's); the change of impulse is then applied to the bodies.
@@ -864,7 +948,8 @@ public:
     void integrate(const T& h) noexcept {
         for_each_body_at_once([&](auto&, std::size_t, std::size_t b) {
             screw<T> m;
-            for (std::size_t c = 0; c < 6; ++c) m[c] = (before_[b][c] + velocity_[b][c]) / T(2) + pseudo_[b][c];
+            for (std::size_t c = 0; c < 6; ++c)
+                m[c] = settings_.substeps > 0 ? displacement_[b][c] / h : (before_[b][c] + velocity_[b][c]) / T(2) + pseudo_[b][c];
             pose_[b] = advance(pose_[b], map_[b].t, m, h);
         });
         for (std::size_t s = 0; s < static_shape_.size(); ++s) {
@@ -913,13 +998,17 @@ public:
     [[nodiscard]] std::span<const constraints::contact_row<T>> contact_rows() const noexcept {
         return {rows_.data() + blocks_, contacts_ - blocks_};
     }
+    // (the soft step's: its last substep's times the substeps)
     [[nodiscard]] vec3<T> contact_impulse(std::size_t c) const noexcept {
         const std::size_t i = blocks_ + c;
-        return {impulse_[3 * i], impulse_[3 * i + 1], impulse_[3 * i + 2]};
+        const T n = settings_.substeps > 0 ? T(settings_.substeps) : T(1);
+        return {n * impulse_[3 * i], n * impulse_[3 * i + 1], n * impulse_[3 * i + 2]};
     }
     // Joint block j's impulses over the last step along its three rows (joint_rows.hpp: the world's
     // axes for a point or weld, the rows' directions otherwise), on body b; body a felt their opposite.
-    [[nodiscard]] const vec3<T>& joint_impulse(std::size_t j) const noexcept { return joint_impulse_[j]; }
+    [[nodiscard]] vec3<T> joint_impulse(std::size_t j) const noexcept {
+        return linear3::scale(settings_.substeps > 0 ? T(settings_.substeps) : T(1), joint_impulse_[j]);
+    }
 
 private:
     template <class F>
@@ -1091,6 +1180,7 @@ private:
     std::pmr::vector<motor<T>> pose_, before_pose_;
     std::pmr::vector<motor_map<T>> map_;
     std::pmr::vector<screw<T>> velocity_, before_, pseudo_;
+    std::pmr::vector<screw<T>> displacement_, free_;  // the soft step's: each body's d = Σ h_s s, its free velocity's share
     std::pmr::vector<vec3<T>> force_, torque_;
     std::pmr::vector<constraints::mobility<T>> mobility_;
     std::pmr::vector<material<T>> material_;
@@ -1110,8 +1200,9 @@ private:
     std::pmr::vector<std::uint32_t> stored_from_;  // each row's first stored impulse of its pair
     std::pmr::vector<constraints::contact_row<T>> rows_;
     std::pmr::vector<world_detail::contact_key> keys_;
-    std::pmr::vector<T> separation_, before_normal_, surface_, impulse_, correction_, mu_;  // surface_: a kinematic shape's normal speed
+    std::pmr::vector<T> separation_, before_normal_, surface_, impulse_, correction_, mu_, restitution_, spring_rate_;  // surface_: a kinematic shape's normal speed
     std::pmr::vector<vec3<T>> arm_;  // contact point − body a's centre
+    std::pmr::vector<vec3<T>> gap_;  // the soft step's: each row's gaps now
     std::pmr::vector<world_detail::stored_impulse<T>> stored_;
     std::pmr::vector<T> conjugate_;       // the conjugate directions' scratch
     std::pmr::vector<T> dense_, scratch_;  // W and q of a problem to polish, Newton's scratch

@@ -465,7 +465,8 @@ void register_all() {
         add("pinch_work/ctga_tol_" + std::to_string(e), [e] { return ctga_pinch(std::pow(10.0, -e)); });
     // the soft step (constraints/soft_step.hpp): n substeps of two sweeps, no tolerance
     add("large_pyramid_work/ctga_soft_4", [] { return ctga_pyramid(0, 1, pyramid_base, pyramid_steps, 1e-6, 4); });
-    add("joint_grid_work/ctga_soft_4", [] { return ctga_grid(0, 1, 4); });
+    for (const std::size_t n : {4, 8, 16})
+        add("joint_grid_work/ctga_soft_" + std::to_string(n), [n] { return ctga_grid(0, 1, n); });
     for (const std::size_t n : {4, 8})
         add("pyramid_work/ctga_soft_" + std::to_string(n), [n] { return ctga_pyramid(0, 1, small_base, small_steps, 1e-6, n); });
     add("pinch_work/ctga_soft_4", [] { return ctga_pinch(1e-6, 4); });

@@ -10,6 +10,8 @@
 
 #include <ctga/constraints/contact_problem.hpp>
 #include <ctga/constraints/newton_polish.hpp>
+#include <ctga/constraints/row_colours.hpp>
+#include <ctga/constraints/soft_step.hpp>
 
 #include "support/catch.hpp"
 #include "support/fc3d_reference.hpp"
@@ -273,4 +275,104 @@ TEST_CASE("contact problem: bounded rows (limits, motors) against every active s
         CHECK(newton.converged);
         for (std::size_t k = 0; k < 3; ++k) CHECK(std::abs(rn[k] - expected[k]) <= 1e-9);
     }
+}
+
+TEST_CASE("constraints: rows in colours share no moving body; a group's lanes give bit for bit what each row gives alone") {
+    // 300 rows between 40 bodies (a fifth against a static side), 6 colours: some rows find none
+    std::mt19937_64 rng(44);
+    std::uniform_int_distribution<std::uint32_t> pick(0, 39);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    constexpr std::size_t m = 300, bodies = 40, colours = 6;
+    std::vector<cn::contact_row<double>> rows(m);
+    std::vector<cn::mobility<double>> M(bodies);
+    for (cn::mobility<double>& x : M) {
+        const vec3<double> d{0.5 + u(rng) * u(rng), 0.7 + u(rng) * u(rng), 0.9 + u(rng) * u(rng)};
+        x.inverse_mass = 1.5 + u(rng);
+        for (std::size_t i = 0; i < 3; ++i)
+            for (std::size_t j = 0; j < 3; ++j) x.inverse_inertia[i][j] = (i == j ? d[i] : 0.1 * (u(rng) + u(rng)));
+        x.inverse_inertia[1][0] = x.inverse_inertia[0][1], x.inverse_inertia[2][0] = x.inverse_inertia[0][2], x.inverse_inertia[2][1] = x.inverse_inertia[1][2];
+    }
+    for (std::size_t i = 0; i < m; ++i) {
+        cn::contact_row<double>& row = rows[i];
+        const std::uint32_t a = pick(rng), b = pick(rng);
+        const vec3<double> n = ctga::linear3::scale(1.0 / std::sqrt(3.0), vec3<double>{1.0, 1.0, 1.0});
+        const std::array<vec3<double>, 2> t = cn::tangents(n);
+        row.direction = {n, t[0], t[1]};
+        row.a = cn::make_side(a, random_vec(rng, 1.0), random_vec(rng, 1.0), row.direction);
+        row.b = i % 5 == 0 || b == a ? cn::row_side<double>{} : cn::make_side(b, random_vec(rng, 1.0), random_vec(rng, 1.0), row.direction);
+        row.block = cn::delassus_block<double>(row, M);
+        row.step_length = cn::step_lengths(row.block);
+        row.mu = 0.5, row.compliance = 0.0, row.bias = {};
+        row.bounded = i % 37 == 0;
+    }
+    std::vector<std::uint64_t> used(colours * 1);
+    std::vector<std::uint32_t> colour_of(m), order(m), start(colours + 2);
+    const std::size_t coloured = cn::colour_rows<double>(rows, bodies, colours, used, colour_of, order, start,
+                                                         [&](std::size_t i) { return rows[i].bounded; });
+    // every row once; within a colour in row order and no moving body twice
+    std::vector<int> seen(m, 0);
+    for (std::uint32_t i : order) ++seen[i];
+    CHECK(std::count(seen.begin(), seen.end(), 1) == int(m));
+    CHECK(start[colours] == coloured);
+    for (std::size_t c = 0; c < colours; ++c) {
+        std::vector<int> on(bodies, 0);
+        for (std::size_t k = start[c]; k < start[c + 1]; ++k) {
+            const cn::contact_row<double>& row = rows[order[k]];
+            for (std::uint32_t body : {row.a.body, row.b.body})
+                if (body != cn::no_body) CHECK(++on[body] == 1);
+            if (k > start[c]) CHECK(order[k] > order[k - 1]);
+            CHECK(!row.bounded);
+        }
+    }
+    // a row left over is bounded, or every colour held one of its bodies when its turn came
+    std::size_t over = 0;
+    for (std::size_t k = coloured; k < m; ++k) {
+        const std::uint32_t i = order[k];
+        if (rows[i].bounded) continue;
+        ++over;
+        for (std::size_t c = 0; c < colours; ++c) {
+            bool blocked = false;
+            for (std::size_t j = start[c]; j < start[c + 1] && order[j] < i; ++j)
+                for (std::uint32_t x : {rows[order[j]].a.body, rows[order[j]].b.body})
+                    blocked = blocked || (x != cn::no_body && (x == rows[i].a.body || x == rows[i].b.body));
+            CHECK(blocked);
+        }
+    }
+    CHECK(over > 0);  // (the test meets overflow)
+
+    // colour 0's rows in groups of 4 lanes against one lane each: the same impulses and screws
+    constexpr std::size_t L = 4;
+    std::vector<ctga::screw<double>> s(bodies + 1), s1(bodies + 1);
+    for (std::size_t b = 0; b < bodies; ++b)
+        for (std::size_t c = 0; c < 6; ++c) s[b][c] = s1[b][c] = u(rng);
+    cn::soft_sweep_settings<double> set{cn::make_soft(60.0, 10.0, 1.0 / 240), cn::make_soft(60.0, 2.0, 1.0 / 240), 3.0, 1.0 / 240, false};
+    for (const bool relax : {false, true}) {
+        set.relax = relax;
+        for (std::size_t k = start[0]; k < start[1]; k += L) {
+            cn::row_group<double, L> g;
+            for (std::size_t l = 0; l < L; ++l) {
+                if (k + l < start[1]) cn::fill_lane(g, l, order[k + l], rows[order[k + l]], std::span<const cn::mobility<double>>(M), bodies);
+                else cn::empty_lane(g, l, bodies, ~std::uint32_t{0});
+                for (std::size_t c = 0; c < 3; ++c) g.r[c].set(l, 0.1 * (u(rng) + 1)), g.gap[c].set(l, 0.01 * u(rng)), g.surface[c].set(l, 0.0);
+                g.spring_rate.set(l, 0.0);
+            }
+            cn::lane_screws<double, L> sa = cn::gather(s.data(), g.a), sb = cn::gather(s.data(), g.b);
+            cn::row_group<double, L> before = g;
+            cn::soft_group(g, false, sa, sb, set);
+            cn::scatter(s.data(), g.a, sa), cn::scatter(s.data(), g.b, sb);
+            for (std::size_t l = 0; l < L && k + l < start[1]; ++l) {
+                cn::row_group<double, 1> one;
+                cn::fill_lane(one, 0, order[k + l], rows[order[k + l]], std::span<const cn::mobility<double>>(M), bodies);
+                for (std::size_t c = 0; c < 3; ++c) one.r[c].set(0, before.r[c][l]), one.gap[c].set(0, before.gap[c][l]), one.surface[c].set(0, 0.0);
+                one.spring_rate.set(0, 0.0);
+                cn::lane_screws<double, 1> a1 = cn::gather(s1.data(), one.a), b1 = cn::gather(s1.data(), one.b);
+                cn::soft_group(one, false, a1, b1, set);
+                cn::scatter(s1.data(), one.a, a1), cn::scatter(s1.data(), one.b, b1);
+                for (std::size_t c = 0; c < 3; ++c) CHECK(one.r[c][0] == g.r[c][l]);
+            }
+        }
+    }
+    for (std::size_t b = 0; b <= bodies; ++b)
+        for (std::size_t c = 0; c < 6; ++c) CHECK(s[b][c] == s1[b][c]);
+    for (std::size_t c = 0; c < 6; ++c) CHECK(s[bodies][c] == 0.0);  // no body stays zero
 }

@@ -235,15 +235,20 @@ template <class T>
 [[nodiscard]] constexpr std::array<T, 2> step_lengths(const mat3<T>& A) noexcept {
     return {T(1) / A[0][0], T(2) / (A[1][1] + A[2][2])};
 }
-// The tangential half, at the new normal impulse rn (the soft step's too: soft_step.hpp).
-template <class T>
-[[nodiscard]] constexpr vec3<T> friction_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r, const T& rn,
-                                              const std::array<T, 2>& length) noexcept {
-    const T dn = rn - r[0];
-    T t1 = r[1] - (u[1] + A[1][0] * dn) * length[1], t2 = r[2] - (u[2] + A[2][0] * dn) * length[1];
-    const T squared = t1 * t1 + t2 * t2, limit = mu * rn;
-    if (squared > limit * limit) {
-        const T s = limit / math::sqrt(squared);
+// The tangential half, at the new normal impulse rn: W_t1n and W_t2n couple it to the normal
+// change, `length` is 1/ρ. In scalars or in the lanes of a pack (the soft step's: soft_step.hpp).
+template <class S>
+[[nodiscard]] constexpr vec3<S> friction_step(const S& coupling_1, const S& coupling_2, const vec3<S>& u, const S& mu, const vec3<S>& r,
+                                              const S& rn, const S& length) noexcept {
+    const S dn = rn - r[0];
+    S t1 = r[1] - (u[1] + coupling_1 * dn) * length, t2 = r[2] - (u[2] + coupling_2 * dn) * length;
+    const S squared = t1 * t1 + t2 * t2, limit = mu * rn;
+    if constexpr (lane_wise<S>) {
+        const auto over = squared > limit * limit;
+        const S s = select(over, limit / math::sqrt(select(over, squared, S(1))), S(1));
+        t1 *= s, t2 *= s;
+    } else if (squared > limit * limit) {
+        const S s = limit / math::sqrt(squared);
         t1 *= s, t2 *= s;
     }
     return {rn, t1, t2};
@@ -252,7 +257,7 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> projected_step(const mat3<T>& A, const vec3<T>& u, const T& mu, const vec3<T>& r,
                                                const std::array<T, 2>& length) noexcept {
     const T rn = r[0] - u[0] * length[0];
-    return friction_step(A, u, mu, r, rn > T(0) ? rn : T(0), length);
+    return friction_step(A[1][0], A[2][0], u, mu, r, rn > T(0) ? rn : T(0), length[1]);
 }
 template <class D>
 [[nodiscard]] constexpr auto step_lengths_of(const D& W, std::size_t i) noexcept {

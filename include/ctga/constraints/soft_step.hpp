@@ -19,10 +19,12 @@
 // bounded block (limits, motor) takes the exact way's bounded step.
 //
 // Each substep: the free velocity's share, the impulses of the last substep applied again (the
-// warm start), one sweep with the springs (soft_sweep, `relax` false), the displacements moved
-// on by h_s s, one sweep without them (`relax` true: the velocities the positions moved with are
-// not the ones the step ends with, so the springs' push is not kept as velocity). Nothing here
-// measures convergence: there is no residual to report, only the gaps the scene ends with.
+// warm start), one sweep with the springs (`relax` false), the displacements moved on by h_s s,
+// one sweep without them (`relax` true: the velocities the positions moved with are not the
+// ones the step ends with, so the springs' push is not kept as velocity). A sweep goes colour by
+// colour through groups of rows that share no body (row_colours.hpp), a group's rows at once in
+// the lanes of a pack (soft_group). Nothing here measures convergence: there is no residual to
+// report, only the gaps the scene ends with.
 #pragma once
 
 #include <algorithm>
@@ -31,8 +33,10 @@
 #include <span>
 
 #include "ctga/constraints/contact_problem.hpp"
+#include "ctga/constraints/row_colours.hpp"
 #include "ctga/mechanics/linear3.hpp"
 #include "ctga/support/math.hpp"
+#include "ctga/support/pack.hpp"
 
 namespace ctga::constraints {
 
@@ -58,54 +62,56 @@ struct soft_sweep_settings {
     bool relax = false;
 };
 
-// A contact on a soft surface (scenes/couplings.hpp) is its own spring: its row's compliance c
-// and offset b, kept current by the caller, replace the step's.
-template <class D>
-[[nodiscard]] constexpr auto compliance_of(const D& W, std::size_t i) noexcept {
-    if constexpr (requires { W.compliance(i); }) return W.compliance(i);
-    else return decltype(W.block(i)[0][0]){0};
+// One group of rows (row_colours.hpp: no two lanes share a body) with the sides' screws in
+// lanes: each lane's new impulses from its velocity and its gaps C (g.gap), applied. A contact on
+// a soft surface (scenes/couplings.hpp) is its own spring: its normal row is u_n + c r_n + b with
+// b = k C / (h_s k + d) (g.spring_rate: k / (h_s k + d)), solved once a substep.
+template <class T, std::size_t L>
+CTGA_ALWAYS_INLINE void soft_group(row_group<T, L>& g, bool bilateral, lane_screws<T, L>& sa, lane_screws<T, L>& sb,
+                                   const soft_sweep_settings<T>& s) noexcept {
+    using P = pack<T, L>;
+    vec3<P> u = group_velocity(g, sa, sb);
+    for (std::size_t k = 0; k < 3; ++k) u[k] += g.surface[k];
+    const vec3<P>& C = g.gap;
+    const vec3<P> r = g.r;
+    vec3<P> next;
+    if (bilateral) {
+        const softness<T> k = s.relax ? softness<T>{} : s.joint;
+        vec3<P> target;
+        for (std::size_t a = 0; a < 3; ++a) target[a] = P(k.mass_scale) * (u[a] + P(k.bias_rate) * C[a]);
+        const std::array<P, 6>& A = g.inverse;  // W⁻¹, upper triangle
+        const vec3<P> push{A[0] * target[0] + A[1] * target[1] + A[2] * target[2], A[1] * target[0] + A[3] * target[1] + A[4] * target[2],
+                           A[2] * target[0] + A[4] * target[1] + A[5] * target[2]};
+        for (std::size_t a = 0; a < 3; ++a) next[a] = r[a] - push[a] - P(k.impulse_scale) * r[a];
+    } else {
+        const P zero(T(0)), length = g.step_length[0];
+        const P un = u[0] + g.compliance * r[0] + g.spring_rate * C[0];
+        // rigid: speculative while open; else the spring (the relaxing sweep: none)
+        const P spring = P(s.contact.bias_rate) * C[0], fastest(-s.push_speed);
+        P rn = s.relax ? r[0] - un * length
+                       : r[0] - P(s.contact.mass_scale) * (un + select(spring > fastest, spring, fastest)) * length -
+                             P(s.contact.impulse_scale) * r[0];
+        rn = select(C[0] > zero, r[0] - (un + C[0] / P(s.substep)) * length, rn);
+        rn = select(g.compliance > zero, s.relax ? r[0] : r[0] - un * length, rn);
+        rn = select(rn > zero, rn, zero);
+        // the friction disc at the new normal impulse, by one projected step (contact_problem.hpp);
+        // the tangential gaps as springs too, so that a sticking contact returns to where it held
+        vec3<P> slip = u;
+        if (!s.relax) slip[1] += P(s.contact.bias_rate) * C[1], slip[2] += P(s.contact.bias_rate) * C[2];
+        next = friction_step(g.coupling_1, g.coupling_2, slip, g.mu, r, rn, g.step_length[1]);
+    }
+    const vec3<P> d{next[0] - r[0], next[1] - r[1], next[2] - r[2]};
+    g.r = next;
+    group_apply(g, d, sa, sb);
 }
 
-// One sweep over the rows of W (its velocities current: rows_delassus), r the impulses of this
-// substep, gap(i) row i's gaps now (C = φ + J d: a contact's normal gap in [0], a joint's three).
-template <class T, class D, class Gap>
-void soft_sweep(D& W, std::span<const T> mu, std::span<T> r, Gap&& gap, const soft_sweep_settings<T>& s,
-                const sweep_schedule<T>* schedule = nullptr) noexcept {
-    const auto body = [&](std::size_t i) {
-        const vec3<T> old{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
-        const vec3<T> u = W.velocity(i, std::span<const T>(r));
-        vec3<T> next;
-        if (is_bounded(W, i)) {
-            next = bounded_step(W.block(i), u, bounds_of<T>(W, i), old);
-        } else if (is_bilateral(W, i)) {
-            const softness<T> k = s.relax ? softness<T>{} : s.joint;
-            const vec3<T> C = gap(i);
-            vec3<T> target;
-            for (std::size_t a = 0; a < 3; ++a) target[a] = k.mass_scale * (u[a] + k.bias_rate * C[a]);
-            const vec3<T> push = linear3::apply(inverse_block(W, i), target);
-            for (std::size_t a = 0; a < 3; ++a) next[a] = old[a] - push[a] - k.impulse_scale * old[a];
-        } else {
-            const std::array<T, 2> length = step_lengths_of(W, i);
-            const vec3<T> gaps = gap(i);
-            const T C = gaps[0];
-            T rn;
-            if (compliance_of(W, i) > T(0)) rn = s.relax ? old[0] : old[0] - u[0] * length[0];  // its own spring, once a substep (u: c r_n + b)
-            else if (C > T(0)) rn = old[0] - (u[0] + C / s.substep) * length[0];  // speculative
-            else if (s.relax) rn = old[0] - u[0] * length[0];
-            else {
-                const T bias = std::max(s.contact.bias_rate * C, -s.push_speed);
-                rn = old[0] - s.contact.mass_scale * (u[0] + bias) * length[0] - s.contact.impulse_scale * old[0];
-            }
-            // the friction disc at the new normal impulse, by one projected step (contact_problem.hpp)
-            vec3<T> slip = u;
-            if (!s.relax) slip[1] += s.contact.bias_rate * gaps[1], slip[2] += s.contact.bias_rate * gaps[2];
-            next = friction_step(W.block(i), slip, mu[i], old, rn > T(0) ? rn : T(0), length);
-        }
-        const vec3<T> d = linear3::sub(next, old);
-        for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = next[a];
-        W.apply(i, d);
-    };
-    for_each_row(schedule, W.contacts(), body);
+// The group's gaps now, C = C₀ + J d + t k: at the step's start, plus its lines paired with the
+// sides' displacements d (§5: the distance the points have moved along e), plus a kinematic
+// surface's speed k times the time t elapsed.
+template <class T, std::size_t L>
+CTGA_ALWAYS_INLINE void measure_gaps(row_group<T, L>& g, const lane_screws<T, L>& da, const lane_screws<T, L>& db, const T& elapsed) noexcept {
+    const vec3<pack<T, L>> moved = group_velocity(g, da, db);
+    for (std::size_t k = 0; k < 3; ++k) g.gap[k] = g.start[k] + moved[k] + pack<T, L>(elapsed) * g.surface[k];
 }
 
 }  // namespace ctga::constraints

@@ -305,9 +305,9 @@ TEST_CASE("constraints: rows in colours share no moving body; a group's lanes gi
         row.mu = 0.5, row.compliance = 0.0, row.bias = {};
         row.bounded = i % 37 == 0;
     }
-    std::vector<std::uint64_t> used(colours * 1);
+    std::vector<std::uint64_t> used(bodies);
     std::vector<std::uint32_t> colour_of(m), order(m), start(colours + 2);
-    const std::size_t coloured = cn::colour_rows<double>(rows, bodies, colours, used, colour_of, order, start,
+    const std::size_t coloured = cn::colour_rows<double>(rows, colours, used, colour_of, order, start,
                                                          [&](std::size_t i) { return rows[i].bounded; });
     // every row once; within a colour in row order and no moving body twice
     std::vector<int> seen(m, 0);

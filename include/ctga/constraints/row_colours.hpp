@@ -18,6 +18,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -28,30 +29,23 @@
 
 namespace ctga::constraints {
 
-// The colours: order holds the rows colour by colour, colour c being order[start[c] ..
-// start[c + 1]); start[colours] .. the end are the rows left over. `used` is scratch of
-// colours × ⌈bodies / 64⌉ words. A row `skip` says so goes with the leftovers.
+// The colours (at most 64): order holds the rows colour by colour, colour c being order[start[c]
+// .. start[c + 1]); start[colours] .. the end are the rows left over. A row takes the lowest
+// colour neither of its moving bodies is in yet (each body's colours a bit mask in `used`, one
+// word per body); a row `skip` says so goes with the leftovers. Returns the rows in colours.
 template <class T, class Skip>
-std::size_t colour_rows(std::span<const contact_row<T>> rows, std::size_t bodies, std::size_t colours, std::span<std::uint64_t> used,
+std::size_t colour_rows(std::span<const contact_row<T>> rows, std::size_t colours, std::span<std::uint64_t> used,
                         std::span<std::uint32_t> colour_of, std::span<std::uint32_t> order, std::span<std::uint32_t> start, Skip&& skip) noexcept {
-    const std::size_t words = (bodies + 63) / 64;
-    for (std::size_t w = 0; w < colours * words; ++w) used[w] = 0;
-    const auto taken = [&](std::size_t c, std::uint32_t body) {
-        return body != no_body && (used[c * words + body / 64] >> (body % 64) & 1u) != 0;
-    };
-    const auto take = [&](std::size_t c, std::uint32_t body) {
-        if (body != no_body) used[c * words + body / 64] |= std::uint64_t{1} << (body % 64);
-    };
+    for (std::uint64_t& w : used) w = 0;
+    const std::uint64_t all = colours >= 64 ? ~std::uint64_t{0} : (std::uint64_t{1} << colours) - 1;
+    const auto in = [&](std::uint32_t body) { return body == no_body ? std::uint64_t{0} : used[body]; };
     for (std::size_t c = 0; c <= colours + 1; ++c) start[c] = 0;
-    // (the colours a row of the same two bodies as the last one tried are taken: it starts after them)
-    std::size_t from = 0;
     for (std::size_t i = 0; i < rows.size(); ++i) {
-        const bool same = i > 0 && rows[i].a.body == rows[i - 1].a.body && rows[i].b.body == rows[i - 1].b.body;
-        std::size_t c = colours;
-        if (!skip(i))
-            for (c = same ? from : 0; c < colours && (taken(c, rows[i].a.body) || taken(c, rows[i].b.body)); ++c) {}
-        if (c < colours) take(c, rows[i].a.body), take(c, rows[i].b.body), from = c + 1;
-        else from = skip(i) ? 0 : colours;
+        const std::uint64_t free = skip(i) ? 0 : all & ~(in(rows[i].a.body) | in(rows[i].b.body));
+        const std::size_t c = free == 0 ? colours : static_cast<std::size_t>(std::countr_zero(free));
+        if (c < colours)
+            for (std::uint32_t body : {rows[i].a.body, rows[i].b.body})
+                if (body != no_body) used[body] |= std::uint64_t{1} << c;
         colour_of[i] = static_cast<std::uint32_t>(c);
         ++start[c + 1];
     }

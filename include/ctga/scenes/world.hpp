@@ -304,9 +304,10 @@ public:
           keys_(rows_for(capacity), storage), separation_(rows_for(capacity), storage), before_normal_(rows_for(capacity), storage),
           surface_(rows_for(capacity), storage),
           impulse_(3 * rows_for(capacity), storage), correction_(3 * rows_for(capacity), storage), mu_(rows_for(capacity), storage), restitution_(rows_for(capacity), storage), spring_rate_(rows_for(capacity), storage), arm_(rows_for(capacity), storage),
-          colour_used_(max_colours * ((total_ + 63) / 64), storage), colour_of_(rows_for(capacity), storage),
+          colour_used_(total_, storage), colour_of_(rows_for(capacity), storage),
           colour_order_(rows_for(capacity), storage), colour_start_(max_colours + 2, storage), lane_group_start_(max_colours + 1, storage),
           lane_groups_(rows_for(capacity) / lanes + 2 * max_colours, storage), lane_bilateral_(rows_for(capacity) / lanes + 2 * max_colours, storage),
+          lane_first_(rows_for(capacity) / lanes + 2 * max_colours + 1, storage),
           stored_(capacity.contacts, storage),
           conjugate_(6 * rows_for(capacity), storage), dense_(9 * settings.polish_limit * settings.polish_limit + 6 * settings.polish_limit, storage),
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
@@ -955,45 +956,34 @@ public:
     // each colour's joints then its contacts in groups of `lanes`, with their impulses (the warm
     // start), gaps at the start and surfaces' speeds.
     void group_rows() noexcept {
-        coloured_ = constraints::colour_rows<T>(rows(), total_, max_colours, std::span<std::uint64_t>(colour_used_),
+        coloured_ = constraints::colour_rows<T>(rows(), max_colours, std::span<std::uint64_t>(colour_used_.data(), total_),
                                                 std::span<std::uint32_t>(colour_of_), std::span<std::uint32_t>(colour_order_),
                                                 std::span<std::uint32_t>(colour_start_), [&](std::size_t i) { return rows_[i].bounded; });
+        // the groups, colour by colour (a colour lists its rows in row order: the joints' blocks,
+        // the first rows, come first; a group holds joints or contacts): each its first row's
+        // place in the order and its rows; then filled, group by group, shared among the threads
         lane_group_count_ = 0;
-        // each coloured row's lane, colour by colour (a colour lists its rows in row order: the
-        // joints' blocks, the first rows, come first; a group holds joints or contacts); then the
-        // lanes filled in row order (the rows read in the order they lie in memory)
-        const std::span<std::uint32_t> lane_of(colour_of_.data(), contacts_);  // (the colours are no longer needed)
-        for (std::size_t i = 0; i < contacts_; ++i) lane_of[i] = no_row;
-        const auto close = [&](std::size_t l) {
-            for (; l < lanes; ++l) constraints::empty_lane(lane_groups_[lane_group_count_ - 1], l, static_cast<std::uint32_t>(total_), no_row);
-        };
         for (std::size_t c = 0; c < max_colours; ++c) {
             lane_group_start_[c] = static_cast<std::uint32_t>(lane_group_count_);
-            std::size_t l = lanes;
-            bool joints = true;
-            for (std::size_t k = colour_start_[c]; k < colour_start_[c + 1]; ++k) {
-                const std::uint32_t i = colour_order_[k];
-                if (joints && i >= blocks_) {
-                    if (l < lanes) close(l);
-                    joints = false, l = lanes;
+            for (std::size_t k = colour_start_[c], l = lanes; k < colour_start_[c + 1]; ++k, ++l) {
+                const bool joint = colour_order_[k] < blocks_;
+                if (l == lanes || joint != (lane_bilateral_[lane_group_count_ - 1] != 0)) {
+                    lane_first_[lane_group_count_] = static_cast<std::uint32_t>(k), lane_bilateral_[lane_group_count_] = joint;
+                    ++lane_group_count_, l = 0;
                 }
-                if (l == lanes) lane_bilateral_[lane_group_count_] = joints, ++lane_group_count_, l = 0;
-                lane_of[i] = static_cast<std::uint32_t>((lane_group_count_ - 1) * lanes + l++);
             }
-            if (l < lanes) close(l);
-        }
-        // group by group (each group's lines written at once), the next group's rows fetched ahead
-        const auto fetch = [&](std::size_t k) {
-            if (k >= coloured_) return;
-            const char* row = reinterpret_cast<const char*>(&rows_[colour_order_[k]]);
-            for (std::size_t b = 0; b < sizeof(constraints::contact_row<T>); b += 64) __builtin_prefetch(row + b);
-        };
-        for (std::size_t k = 0; k < coloured_; ++k) {
-            fetch(k + 2 * lanes);
-            const std::uint32_t i = colour_order_[k];
-            fill_row(lane_groups_[lane_of[i] / lanes], lane_of[i] % lanes, i);
         }
         lane_group_start_[max_colours] = static_cast<std::uint32_t>(lane_group_count_);
+        lane_first_[lane_group_count_] = static_cast<std::uint32_t>(coloured_);
+        at_once(lane_group_count_, [&](std::size_t j) {
+            // (a group's rows: from its first to the next group's first, or its colour's end)
+            const std::size_t first = lane_first_[j], end = std::min<std::size_t>(lane_first_[j + 1], first + lanes);
+
+            for (std::size_t l = 0; l < lanes; ++l) {
+                if (first + l < end) fill_row(lane_groups_[j], l, colour_order_[first + l]);
+                else constraints::empty_lane(lane_groups_[j], l, static_cast<std::uint32_t>(total_), no_row);
+            }
+        });
     }
     template <std::size_t L>
     void fill_row(constraints::row_group<T, L>& g, std::size_t l, std::uint32_t i) noexcept {
@@ -1333,6 +1323,7 @@ private:
     std::pmr::vector<std::uint32_t> colour_of_, colour_order_, colour_start_, lane_group_start_;
     std::pmr::vector<lane_group> lane_groups_;
     std::pmr::vector<unsigned char> lane_bilateral_;
+    std::pmr::vector<std::uint32_t> lane_first_;  // each group's first row's place in colour_order_
     std::size_t coloured_ = 0, lane_group_count_ = 0;
     std::pmr::vector<world_detail::stored_impulse<T>> stored_;
     std::pmr::vector<T> conjugate_;       // the conjugate directions' scratch

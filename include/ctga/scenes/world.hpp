@@ -307,7 +307,8 @@ public:
           colour_used_(total_, storage), colour_of_(rows_for(capacity), storage),
           colour_order_(rows_for(capacity), storage), colour_start_(max_colours + 2, storage), lane_group_start_(max_colours + 1, storage),
           lane_groups_(rows_for(capacity) / lanes + 2 * max_colours, storage), lane_bilateral_(rows_for(capacity) / lanes + 2 * max_colours, storage),
-          lane_first_(rows_for(capacity) / lanes + 2 * max_colours + 1, storage),
+          lane_first_(rows_for(capacity) / lanes + 2 * max_colours, storage), lane_count_(rows_for(capacity) / lanes + 2 * max_colours, storage),
+          singles_(max_colours * (lanes / 4), storage), single_bilateral_(max_colours * (lanes / 4), storage), single_start_(max_colours + 1, storage),
           stored_(capacity.contacts, storage),
           conjugate_(6 * rows_for(capacity), storage), dense_(9 * settings.polish_limit * settings.polish_limit + 6 * settings.polish_limit, storage),
           scratch_(constraints::newton_scratch_size(settings.polish_limit), storage),
@@ -877,13 +878,12 @@ public:
         screw<T>* const d = displacement_.data();
         v[total_] = d[total_] = screw<T>{};  // no body
         T elapsed = T(0);
-        // group j's sweep: in the relaxing one its gaps measured first (just after the positions
+        // a group's sweep: in the relaxing one its gaps measured first (just after the positions
         // moved: the next substep's first sweep finds them unchanged)
-        const auto sweep_group = [&](std::size_t j) {
-            lane_group& g = lane_groups_[j];
+        const auto sweep_group = [&](auto& g, bool bilateral) {
             if (s.relax) constraints::measure_gaps(g, constraints::gather(d, g.a), constraints::gather(d, g.b), elapsed);
-            constraints::lane_screws<T, lanes> sa = constraints::gather(v, g.a), sb = constraints::gather(v, g.b);
-            constraints::soft_group(g, lane_bilateral_[j] != 0, sa, sb, s);
+            auto sa = constraints::gather(v, g.a), sb = constraints::gather(v, g.b);
+            constraints::soft_group(g, bilateral, sa, sb, s);
             constraints::scatter(v, g.a, sa), constraints::scatter(v, g.b, sb);
         };
         // a row left over (its body in more rows than there are colours) as a group of one lane,
@@ -918,9 +918,8 @@ public:
                 velocity_[b] = screw<T>(substep_start_[b] + pushed);
             });
             if (k == 0) {
-                each_colour([&](std::size_t j) {
-                    lane_group& g = lane_groups_[j];
-                    constraints::lane_screws<T, lanes> sa = constraints::gather(v, g.a), sb = constraints::gather(v, g.b);
+                each_colour([&](auto& g, bool) {
+                    auto sa = constraints::gather(v, g.a), sb = constraints::gather(v, g.b);
                     constraints::group_apply(g, g.r, sa, sb);
                     constraints::scatter(v, g.a, sa), constraints::scatter(v, g.b, sb);
                 });
@@ -936,10 +935,11 @@ public:
             elapsed += hs;
             sweep(true);
         }
-        for (std::size_t j = 0; j < lane_group_count_; ++j)
-            for (std::size_t l = 0; l < lanes; ++l)
-                if (const std::uint32_t i = lane_groups_[j].row[l]; i != no_row)
-                    for (std::size_t k = 0; k < 3; ++k) r[3 * i + k] = lane_groups_[j].r[k][l];
+        each_colour([&](const auto& g, bool) {
+            for (std::size_t l = 0; l < g.row.size(); ++l)
+                if (const std::uint32_t i = g.row[l]; i != no_row)
+                    for (std::size_t k = 0; k < 3; ++k) r[3 * i + k] = g.r[k][l];
+        });
         for (std::size_t c = blocks_; c < contacts_; ++c) {
             if (restitution_[c] == T(0) || impulse_[3 * c] == T(0) || rows_[c].compliance > T(0)) continue;
             const T u = W.velocity(c, r)[0];
@@ -962,25 +962,32 @@ public:
         // the groups, colour by colour (a colour lists its rows in row order: the joints' blocks,
         // the first rows, come first; a group holds joints or contacts): each its first row's
         // place in the order and its rows; then filled, group by group, shared among the threads
-        lane_group_count_ = 0;
+        // (a colour of a few rows, a quarter of the lanes or fewer, goes one row at a time: a
+        // pinched box's 8 rows are 8 colours of one, and groups of 8 lanes swept 7 of nothing)
+        lane_group_count_ = single_count_ = 0;
         for (std::size_t c = 0; c < max_colours; ++c) {
-            lane_group_start_[c] = static_cast<std::uint32_t>(lane_group_count_);
-            for (std::size_t k = colour_start_[c], l = lanes; k < colour_start_[c + 1]; ++k, ++l) {
-                const bool joint = colour_order_[k] < blocks_;
-                if (l == lanes || joint != (lane_bilateral_[lane_group_count_ - 1] != 0)) {
-                    lane_first_[lane_group_count_] = static_cast<std::uint32_t>(k), lane_bilateral_[lane_group_count_] = joint;
-                    ++lane_group_count_, l = 0;
+            lane_group_start_[c] = static_cast<std::uint32_t>(lane_group_count_), single_start_[c] = static_cast<std::uint32_t>(single_count_);
+            if (4 * (colour_start_[c + 1] - colour_start_[c]) <= lanes) {
+                for (std::size_t k = colour_start_[c]; k < colour_start_[c + 1]; ++k) {
+                    const std::uint32_t i = colour_order_[k];
+                    fill_row(singles_[single_count_], 0, i), single_bilateral_[single_count_++] = i < blocks_;
                 }
+                continue;
+            }
+            for (std::size_t k = colour_start_[c]; k < colour_start_[c + 1]; ++k) {
+                const bool joint = colour_order_[k] < blocks_;
+                const std::size_t j = lane_group_count_ - 1;
+                if (lane_group_count_ == lane_group_start_[c] || lane_count_[j] == lanes || joint != (lane_bilateral_[j] != 0)) {
+                    lane_first_[lane_group_count_] = static_cast<std::uint32_t>(k), lane_count_[lane_group_count_] = 0;
+                    lane_bilateral_[lane_group_count_++] = joint;
+                }
+                ++lane_count_[lane_group_count_ - 1];
             }
         }
-        lane_group_start_[max_colours] = static_cast<std::uint32_t>(lane_group_count_);
-        lane_first_[lane_group_count_] = static_cast<std::uint32_t>(coloured_);
+        lane_group_start_[max_colours] = static_cast<std::uint32_t>(lane_group_count_), single_start_[max_colours] = static_cast<std::uint32_t>(single_count_);
         at_once(lane_group_count_, [&](std::size_t j) {
-            // (a group's rows: from its first to the next group's first, or its colour's end)
-            const std::size_t first = lane_first_[j], end = std::min<std::size_t>(lane_first_[j + 1], first + lanes);
-
             for (std::size_t l = 0; l < lanes; ++l) {
-                if (first + l < end) fill_row(lane_groups_[j], l, colour_order_[first + l]);
+                if (l < lane_count_[j]) fill_row(lane_groups_[j], l, colour_order_[lane_first_[j] + l]);
                 else constraints::empty_lane(lane_groups_[j], l, static_cast<std::uint32_t>(total_), no_row);
             }
         });
@@ -1000,17 +1007,19 @@ public:
         fill_row(g, 0, static_cast<std::uint32_t>(i));
         return g;
     }
-    // f(j) for each group j, colour by colour, a colour's groups shared among the team's threads
-    // when it has many rows (they share no body: the same result for any number of threads)
+    // f(group, bilateral) for each group, colour by colour, a colour's groups of lanes shared among
+    // the team's threads when it has many rows (they share no body: the same result for any number
+    // of threads), then its rows that go one at a time
     template <class F>
     void each_colour(F&& f) {
         for (std::size_t c = 0; c < max_colours; ++c) {
             const std::size_t first = lane_group_start_[c], count = lane_group_start_[c + 1] - first;
             const auto chunk = [&](std::size_t begin, std::size_t end) {
-                for (std::size_t j = begin; j < end; ++j) f(first + j);
+                for (std::size_t j = first + begin; j < first + end; ++j) f(lane_groups_[j], lane_bilateral_[j] != 0);
             };
             if (count * lanes >= settings_.parallel_rows / 2) crew_.run(count, chunk);
             else chunk(0, count);
+            for (std::size_t k = single_start_[c]; k < single_start_[c + 1]; ++k) f(singles_[k], single_bilateral_[k] != 0);
         }
     }
 
@@ -1324,6 +1333,11 @@ private:
     std::pmr::vector<lane_group> lane_groups_;
     std::pmr::vector<unsigned char> lane_bilateral_;
     std::pmr::vector<std::uint32_t> lane_first_;  // each group's first row's place in colour_order_
+    std::pmr::vector<unsigned char> lane_count_;   // and its rows
+    std::pmr::vector<constraints::row_group<T, 1>> singles_;  // the rows of colours of few rows, one at a time
+    std::pmr::vector<unsigned char> single_bilateral_;
+    std::pmr::vector<std::uint32_t> single_start_;
+    std::size_t single_count_ = 0;
     std::size_t coloured_ = 0, lane_group_count_ = 0;
     std::pmr::vector<world_detail::stored_impulse<T>> stored_;
     std::pmr::vector<T> conjugate_;       // the conjugate directions' scratch

@@ -10,7 +10,8 @@
 //                  spherical joints to the neighbour above and to the left; the spheres do not
 //                  collide; 100 steps
 // <scene>/ctga_2threads splits the bodies in two parts swept at once (world_settings::partitions),
-// which changes the order of the sweeps, not the problem. Each iteration runs the whole scene from its start. Counters: ms_per_step, and the scene's
+// which changes the order of the sweeps, not the problem. ctga_soft_<n>: the soft step
+// (constraints/soft_step.hpp) with n substeps, to no tolerance (its _2threads: the same numbers). Each iteration runs the whole scene from its start. Counters: ms_per_step, and the scene's
 // accuracy: the top cube's displacement at the end (drift, m), the largest penetration seen (m),
 // the largest joint gap seen (m). ctga at its settings (world_settings: a tolerance on the
 // natural-map residual and a budget of sweeps); the work–precision rows <scene>_work/ctga_<n>
@@ -464,12 +465,15 @@ void register_all() {
     for (const int e : {2, 4, 6, 10})
         add("pinch_work/ctga_tol_" + std::to_string(e), [e] { return ctga_pinch(std::pow(10.0, -e)); });
     // the soft step (constraints/soft_step.hpp): n substeps of two sweeps, no tolerance
-    add("large_pyramid_work/ctga_soft_4", [] { return ctga_pyramid(0, 1, pyramid_base, pyramid_steps, 1e-6, 4); });
-    for (const std::size_t n : {4, 8, 16})
-        add("joint_grid_work/ctga_soft_" + std::to_string(n), [n] { return ctga_grid(0, 1, n); });
     for (const std::size_t n : {4, 8})
+        add("large_pyramid_work/ctga_soft_" + std::to_string(n), [n] { return ctga_pyramid(0, 1, pyramid_base, pyramid_steps, 1e-6, n); });
+    add("large_pyramid_work/ctga_soft_4_2threads", [] { return ctga_pyramid(0, 2, pyramid_base, pyramid_steps, 1e-6, 4); });
+    add("joint_grid_work/ctga_soft_4", [] { return ctga_grid(0, 1, 4); });
+    add("joint_grid_work/ctga_soft_4_2threads", [] { return ctga_grid(0, 2, 4); });
+    for (const std::size_t n : {4, 8, 16, 32})
         add("pyramid_work/ctga_soft_" + std::to_string(n), [n] { return ctga_pyramid(0, 1, small_base, small_steps, 1e-6, n); });
-    add("pinch_work/ctga_soft_4", [] { return ctga_pinch(1e-6, 4); });
+    for (const std::size_t n : {4, 16})
+        add("pinch_work/ctga_soft_" + std::to_string(n), [n] { return ctga_pinch(1e-6, n); });
 #ifdef CTGA_BENCH_BULLET
     add("large_pyramid/bullet", [] { return bullet_pyramid(); });
     add("joint_grid/bullet", bullet_grid);

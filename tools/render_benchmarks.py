@@ -381,7 +381,8 @@ def contact_section(contact_json, img_dir):
            "penetration, the largest joint gap, the fastest body's speed at the end (a pile at rest: small). mixed_pile: 1,000",
            "spheres, capsules, boxes and hulls (centre of mass off their points' origin) dropped into a box, 300 steps.",
            "ctga at a tolerance of 1e-6 on the natural-map residual and at most 100",
-           "sweeps a step (`<scene>_work`: n sweeps); Bullet 3.24, MuJoCo 2.2.2 and ODE 0.16 at their defaults.", ""]
+           "sweeps a step (`<scene>_work`: `ctga_<n>` at n sweeps, `ctga_soft_<n>` the soft step with n substeps, no",
+           "tolerance); Bullet 3.24, MuJoCo 2.2.2 and ODE 0.16 at their defaults.", ""]
     def bullet_of(scene):  # <scene>_work rows against <scene>'s Bullet row
         entries = rows.get(scene.removesuffix("_work"), [])
         return next((b.get("ms_per_step") for impl, b in entries if impl == "bullet" and not b.get("error_occurred")), None)
@@ -419,7 +420,8 @@ def work_precision(precision, img_dir):
            "Error against time per step. `pyramid_work`: the pyramid with a base of 20 (210 cubes) for 60 s at 60 Hz,",
            "the top cube's drift; `pinch_work`: a 10 cm cube held between two fingers pressing with 10 N (μ = 0.5: it",
            "must not slip) for 2 s at 1 kHz, its mean slip speed. ctga at a tolerance on the natural-map residual",
-           "(`ctga_tol_<e>`: 1e-e, sweeps until it holds) or at n sweeps (`ctga_<n>`); Bullet and MuJoCo at n iterations",
+           "(`ctga_tol_<e>`: 1e-e, sweeps until it holds), at n sweeps (`ctga_<n>`) or by the soft step with n substeps",
+           "(`ctga_soft_<n>`, no residual); Bullet and MuJoCo at n iterations",
            "(MuJoCo's default is 100, Bullet's 10). residual: the largest ctga reported in a step.", "",
            f"![work-precision: error against time per step](img/{os.path.basename(WORK_PRECISION_SVG)})", ""]
     fig, axes = plt.subplots(1, len(precision), figsize=(6 * len(precision), 4.5))
@@ -434,7 +436,7 @@ def work_precision(precision, img_dir):
                 out.append(f"| {impl} | {b.get('error_message', 'not run')} | | | |")
                 continue
             t = b["ms_per_step"] * scale
-            residual = f"{b['residual']:.2g}" if impl.startswith("ctga") else "—"
+            residual = f"{b['residual']:.2g}" if impl.startswith("ctga") and not impl.startswith("ctga_soft") else "—"
             out.append(f"| {impl} | {t:.3g} | {b[counter]:.2g} | {b['penetration']:.2g} | {residual} |")
             family, _, knob = impl.rpartition("_")
             series.setdefault(family, []).append((int(knob), t, max(b[counter], 1e-18)))
@@ -462,6 +464,7 @@ WORK_PRECISION_SVG = "contact_work_precision.svg"
 # a row family's legend, colour (the same in both panels) and how its knob is written
 WORK_FAMILIES = {"ctga_tol": ("ctga, to a tolerance", "C0", lambda e: f"1e-{e}"),
                  "ctga": ("ctga, n sweeps", "C1", str),
+                 "ctga_soft": ("ctga, soft step, n substeps", "C4", str),
                  "bullet": ("Bullet 3.24, n iterations", "C2", str),
                  "mujoco": ("MuJoCo 2.2.2, n iterations", "C3", str)}
 

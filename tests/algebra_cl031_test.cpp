@@ -3,6 +3,6 @@
 // PARTS: 5
 #include "support/properties.hpp"
 
-TEST_CASE("Cl(0,3,1), the paper's algebra of screws and motors (§3): sparse products and maps equal the dense reference; laws hold" CTGA_TEST_PART_NAME, "[algebra][cl031]") {
+TEST_CASE("Cl(0,3,1), the paper's algebra of screws and motors (§3): sparse products and maps equal the dense reference, laws hold" CTGA_TEST_PART_NAME, "[algebra][cl031]") {
     ctga::test::run_small_suite<ctga::cl031>(31);
 }

@@ -8,7 +8,7 @@ namespace {
 
 using G = ctga::algebra<"e1 e2 e3 e4 e5 e6 e7 e8 e9 e10", 1, 1, 1, -1, 0, 1, 1, 1, -1, 0>;
 
-TEST_CASE("10 generators: sparse products and maps equal the dense reference; laws hold" CTGA_TEST_PART_NAME, "[algebra][ten]") {
+TEST_CASE("10 generators: sparse products and maps equal the dense reference, laws hold" CTGA_TEST_PART_NAME, "[algebra][ten]") {
     using namespace ctga::test;
     static_assert(G::blade_count == 1024);
     static_assert(permutation_sign(bar_permutation<G>()) == -1.0, "swapping two halves of 5 is odd");

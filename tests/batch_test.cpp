@@ -245,7 +245,7 @@ TEST_CASE("a batch of several blocks (and a partial one) steps every body", "[sc
     CHECK(worst <= 1e-15);
 }
 
-TEST_CASE("a batch holds at most its capacity; the AoS reference steps like rk4", "[scenes][batch]") {
+TEST_CASE("a batch holds at most its capacity, the AoS reference steps like rk4", "[scenes][batch]") {
     batch<double, sub::planar, kind::diagonal, 3> b{box};
     std::mt19937_64 rng(5);
     const auto x = random_state<sub::planar>(rng);

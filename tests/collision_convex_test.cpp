@@ -248,7 +248,7 @@ TEST_CASE("collision: manifolds of convex pairs: a capsule lying on a box touche
     CHECK(std::abs(crossed.points[0].separation + 0.01) <= 1e-14);
 }
 
-TEST_CASE("collision: manifolds on a half-space: a hull tilted by 1° keeps its face's four corners, each at its own depth; tilted 20°, its edge's two") {
+TEST_CASE("collision: manifolds on a half-space: a hull tilted by 1° keeps its face's four corners, each at its own depth, tilted 20°, its edge's two") {
     const co::half_space<double> floor{};
     const ctga::motor_map<double> ground{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
     for (const double tilt : {0.0174533, 0.349066}) {

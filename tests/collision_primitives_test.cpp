@@ -42,7 +42,7 @@ TEST_CASE("collision: closed-form pairs and boxes against the brute-force refere
     check_pair_near_and_far<box_kind, box_kind>(21);  // GJK apart, the separating axes overlapping
 }
 
-TEST_CASE("collision: a sphere inside a box leaves by the nearest face; crossing capsule cores part perpendicular to both") {
+TEST_CASE("collision: a sphere inside a box leaves by the nearest face, crossing capsule cores part perpendicular to both") {
     const ctga::motor_map<double> I{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
     ctga::motor_map<double> P = I;
     P.t = {0.1, -0.7, 0.2};  // nearest face y = −1 (margin 0.3)

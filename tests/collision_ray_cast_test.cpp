@@ -190,7 +190,7 @@ TEST_CASE("collision: ray casts along the axes against distances written out, at
     }
 }
 
-TEST_CASE("collision: ray casts that miss, stop short, start inside or on the surface; grazing rays") {
+TEST_CASE("collision: ray casts that miss, stop short, start inside or on the surface, grazing rays") {
     const ctga::motor_map<double> P = placed({1, 2, 3});
     const co::sphere<double> sp = *co::make_sphere(1.0);
     const co::box<double> b = *co::make_box(1.0, 1.0, 1.0);
@@ -549,7 +549,7 @@ TEST_CASE("collision: time of impact of a turning long box sweeping onto a spher
     }
 }
 
-TEST_CASE("collision: a small fast sphere does not pass through a 1 cm wall in one step; starts in overlap and touching; failures") {
+TEST_CASE("collision: a small fast sphere does not pass through a 1 cm wall in one step, starts in overlap and touching, failures") {
     // a sphere of radius 5 cm at 200 m/s towards a wall 1 cm thick, 1 m away, over a step of 1/60 s:
     // it moves 3.33 m, and is clear of the wall at both ends of the step
     const co::box<double> wall = *co::make_box(0.005, 1.0, 1.0);

@@ -131,7 +131,7 @@ TEST_CASE("collision: a bumpy mesh and height field against the reference, the h
     }
 }
 
-TEST_CASE("collision: ray casts on a mesh equal the nearest of every triangle; on a flat field the plane's closed form") {
+TEST_CASE("collision: ray casts on a mesh equal the nearest of every triangle, on a flat field the plane's closed form") {
     terrain T(12, 321);
     const auto mesh = T.mesh();
     const ctga::motor_map<double> id{{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}, {0, 0, 0}};
@@ -176,7 +176,7 @@ TEST_CASE("collision: ray casts on a mesh equal the nearest of every triangle; o
     }
 }
 
-TEST_CASE("collision: a box on a floor of many triangles is one manifold of its four corners; in a crease, two") {
+TEST_CASE("collision: a box on a floor of many triangles is one manifold of its four corners, in a crease, two") {
     // a flat 6 × 6 field, spacing 0.25: the box's face spans several cells
     std::vector<double> flat(36, 0.0);
     std::vector<co::bvh_node<double>> nodes(co::bvh_nodes_for(25));

@@ -162,7 +162,7 @@ TEST_CASE("q₁ ⊖ q₀ inverts ⊕, and interpolation runs along it", "[chains
     CHECK(pose_distance(k.pose[1], ch::forward_kinematics(m, ch::neutral(m)).X[1]) == 0);
 }
 
-TEST_CASE("random configurations lie within the limits; an infinite bound they need is reported", "[chains][configuration]") {
+TEST_CASE("random configurations lie within the limits, an infinite bound they need is reported", "[chains][configuration]") {
     std::mt19937_64 rng(43);
     const ch::model<robot> m = make_robot(rng);
     auto limits = ch::unlimited<robot>();

@@ -277,7 +277,7 @@ TEST_CASE("contact problem: bounded rows (limits, motors) against every active s
     }
 }
 
-TEST_CASE("constraints: rows in colours share no moving body; a group's lanes give bit for bit what each row gives alone") {
+TEST_CASE("constraints: rows in colours share no moving body, a group's lanes give bit for bit what each row gives alone") {
     // 300 rows between 40 bodies (a fifth against a static side), 6 colours: some rows find none
     std::mt19937_64 rng(44);
     std::uniform_int_distribution<std::uint32_t> pick(0, 39);

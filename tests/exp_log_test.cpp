@@ -422,7 +422,7 @@ double matrix_rel(const homogeneous_matrix<T>& a, const homogeneous_matrix<T>& b
     return d / m;
 }
 
-TEST_CASE("§2–3 homogeneous matrices: g = t r ↔ [R t; 0 1], round trips, and g s g* = H s", "[mechanics][motion]") {
+TEST_CASE("§2–3 homogeneous matrices: g = t r ↔ [R t, 0 1], round trips, and g s g* = H s", "[mechanics][motion]") {
     constexpr homogeneous_matrix<double> shift{{{1, 0, 0, 2}, {0, 1, 0, 4}, {0, 0, 1, 6}, {0, 0, 0, 1}}};
     static_assert(from_homogeneous(shift).value == motor<double>{1, 0, 0, 0, 0, 1, 2, 3});
     static_assert(to_homogeneous(motor<double>{1, 0, 0, 0, 0, 1, 2, 3}) == shift);

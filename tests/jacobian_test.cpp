@@ -19,7 +19,7 @@ using namespace ctga;
 using namespace ctga_test::jacobians;
 using ctga::test::published;
 
-TEST_CASE("momentum P = A ∨ (N ∧ s): ∂P/∂s is N, ∂P/∂N is linear in s; both as dual numbers give", "[jacobian]") {
+TEST_CASE("momentum P = A ∨ (N ∧ s): ∂P/∂s is N, ∂P/∂N is linear in s, both as dual numbers give", "[jacobian]") {
     const auto make = [](random_source& r) {
         return std::make_tuple(body_inertia_of(random_body(r)), random_multivector<screw<double>>(r));
     };

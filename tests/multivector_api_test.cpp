@@ -46,7 +46,7 @@ TEST_CASE("components are stored as written and read under any spelling", "[api]
     static_assert(sizeof(screw) == 6 * sizeof(double), "exactly the stored blades, nothing else");
 }
 
-TEST_CASE("conversion to a wider blade set keeps values; projection drops on purpose", "[api]") {
+TEST_CASE("conversion to a wider blade set keeps values, projection drops on purpose", "[api]") {
     constexpr rotor r{0.5, 0.5, -0.5, 0.5};
     constexpr motor g = r;  // a rotor is a motor
     static_assert(get<"e3e1">(g) == -0.5 && get<"1">(g) == 0.5 && get<"e1e">(g) == 0);

@@ -73,7 +73,7 @@ TEST_CASE("pack: arithmetic is lane by lane, a number broadcasts to every lane")
     CHECK((-a)[2] == -3.0);
 }
 
-TEST_CASE("pack: comparisons are masks; select chooses lane by lane, bit for bit") {
+TEST_CASE("pack: comparisons are masks, select chooses lane by lane, bit for bit") {
     using P = pack<double, 4>;
     const P x = P::generate([](std::size_t l) { return std::array{-1.0, 0.0, 2.0, -0.0}[l]; });
     const auto positive = x > P(0.0);
@@ -96,7 +96,7 @@ TEST_CASE("pack: comparisons are masks; select chooses lane by lane, bit for bit
     static_assert(!ctga::lane_wise<double>);
 }
 
-TEST_CASE("pack: finite_lanes marks NaN and infinities; sqrt lane by lane") {
+TEST_CASE("pack: finite_lanes marks NaN and infinities, sqrt lane by lane") {
     using P = pack<double, 4>;
     const double inf = std::numeric_limits<double>::infinity(), nan = std::numeric_limits<double>::quiet_NaN();
     const P x = P::generate([&](std::size_t l) { return std::array{4.0, nan, -inf, 2.0}[l]; });

@@ -212,7 +212,7 @@ TEST_CASE("pga: a translator by d adds d to points and moves planes and lines al
     }
 }
 
-TEST_CASE("pga: M2 * M1 applies M1 first; T * R rotates, then translates", "[pga]") {
+TEST_CASE("pga: M2 * M1 applies M1 first, T * R rotates, then translates", "[pga]") {
     random_source r;
     const vec3 d = r.vec(), axis = r.vec(), x = r.vec();
     const double theta = 2.0;

@@ -106,7 +106,7 @@ TEST_CASE("a mixed scene steps every body as the general 3D code does, to 1e-12"
     CHECK(rel(later, ctga::exp(screw<double>{0, 0, 2, 2, 0, 0})) == 0);
 }
 
-TEST_CASE("two bodies coupled by a spring conserve energy and momentum; a damper dissipates", "[scenes][springs]") {
+TEST_CASE("two bodies coupled by a spring conserve energy and momentum, a damper dissipates", "[scenes][springs]") {
     using ball = body_motion<double, sub::full, kind::sphere>;
     using box = body_motion<double, sub::full, kind::diagonal>;
     const ball a{{2.0, 0.8}};

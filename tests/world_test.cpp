@@ -84,7 +84,7 @@ TEST_CASE("world: a block on an incline slides at g (sin θ − μ cos θ), losi
     }
 }
 
-TEST_CASE("world: a ball bounces to e^(2k) h0; with e = 1 and no friction its energy is kept") {
+TEST_CASE("world: a ball bounces to e^(2k) h0, with e = 1 and no friction its energy is kept") {
     const double r = 0.1, h0 = 1.0;
     for (const double e : {1.0, 0.5}) {
         ctga::physics_world<double, plane, ball> w({1}, {.statics = 1, .contacts = 4, .pairs = 4});
@@ -373,7 +373,7 @@ TEST_CASE("world: revolute, prismatic, fixed and distance joints move as ABA, th
     }
 }
 
-TEST_CASE("world: a motor drives a joint at its effort up to its speed; limits stop a revolute and a prismatic joint") {
+TEST_CASE("world: a motor drives a joint at its effort up to its speed, limits stop a revolute and a prismatic joint") {
     using ctga::vec3;
     // a wheel (a box) on a revolute joint about z, gravity along the axis: the motor's torque τ
     // turns it at τ / I_z until it reaches the speed, then holds it there

@@ -13,8 +13,7 @@
 //
 // A group's velocities u_k = L_k^B(s_B) − L_k^A(s_A) (contact_rows.hpp) and the change an impulse
 // dr makes, s_B += N_B⁻¹ Σ dr_k L_k, s_A −= N_A⁻¹ Σ dr_k L_k, are `group_velocity` and `group_apply`,
-// on the bodies' screws gathered into lanes (`gather`) and put back (`scatter`, past-the-end lanes
-// skipped).
+// on the bodies' screws gathered into lanes (`gather`) and put back (`scatter`).
 #pragma once
 
 #include <array>

@@ -862,7 +862,7 @@ public:
         const std::size_t n = settings_.substeps;
         const T hs = h / T(n), quarter = T(0.25) / hs;
         // (a joint's spring faster than a quarter of the substeps' rate made a chain ring and grow:
-        // the joint grid at 4 substeps, joints at 120 Hz, gap 23 cm after 100 steps, at 60 Hz 1.1 mm)
+        // a 10 × 10 joint grid at 4 substeps, joints at 120 Hz: gap 23 cm after 100 steps; at 60 Hz 1.1 mm)
         const T hertz = settings_.contact_hertz > T(0) && settings_.contact_hertz < quarter ? settings_.contact_hertz : quarter;
         constraints::soft_sweep_settings<T> s{constraints::make_soft(hertz, settings_.contact_damping, hs),
                                               constraints::make_soft(std::min(T(2) * hertz, quarter), settings_.joint_damping, hs),

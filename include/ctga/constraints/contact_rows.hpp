@@ -161,7 +161,6 @@ struct rows_delassus {
     [[nodiscard]] constexpr const mat3<T>& inverse_block(std::size_t i) const noexcept { return rows[i].inverse; }
     [[nodiscard]] constexpr const std::array<T, 2>& step_lengths(std::size_t i) const noexcept { return rows[i].step_length; }
     [[nodiscard]] constexpr bool bounded(std::size_t i) const noexcept { return rows[i].bounded; }
-    [[nodiscard]] constexpr T compliance(std::size_t i) const noexcept { return rows[i].compliance; }
     [[nodiscard]] constexpr std::array<vec3<T>, 2> bounds(std::size_t i) const noexcept { return {rows[i].lower, rows[i].upper}; }
     [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> r = {}) const noexcept {
         vec3<T> u = linear3::add(rows[i].bias, row_velocity(rows[i], std::span<const screw<T>>(velocity_of_body)));

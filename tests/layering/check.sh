@@ -2,7 +2,7 @@
 # The layers of include/ctga point one way: each folder includes only its own headers and those
 # of the layers below it.
 #
-#   support  <  algebra  <  expr  <  operations  <  geometry  <  mechanics  <  collision  <  integrators  <  constraints  <  scenes  <  chains
+#   support  <  algebra  <  expr  <  operations  <  geometry  <  mechanics  <  collision  <  integrators  <  constraints  <  scenes  <  chains  <  constrained
 #
 # (core.hpp and ctga.hpp, the umbrella headers, and reference/dense.hpp, which uses only the
 # algebra's description, sit outside.) A reader of algebra/ never needs expr/, and so on up.
@@ -12,7 +12,7 @@
 # Usage: check.sh <include/ctga directory>
 set -euo pipefail
 root=${1:?usage: check.sh include/ctga}
-layers=(support algebra expr operations geometry mechanics collision integrators constraints scenes chains)
+layers=(support algebra expr operations geometry mechanics collision integrators constraints scenes chains constrained)
 status=0
 
 rank() {

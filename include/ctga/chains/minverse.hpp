@@ -390,23 +390,40 @@ constexpr tree_matrix<Tree, T, sparsity::components> tree_inverse(const tree_fac
     else inverse_rows<Tree, row_lanes<T>>(f, Z.data());
     return Z;
 }
-// H⁻¹ r from the factor (Featherstone Table 6.4): Lᵀ y = r from the leaves, z = D⁻¹ y, L x = z
-// from the root (NaN when H is not positive definite).
-template <class Tree, class T>
-constexpr std::array<T, Tree::nv> tree_solve(const tree_factor<Tree, T>& f, std::array<T, Tree::nv> r) noexcept {
+// H⁻¹ r from the factor (Featherstone Table 6.4) in its two halves: Lᵀ y = r from the leaves
+// (transposed_sweep), then L x = D⁻¹ y from the root (lower_sweep); NaN when H is not positive
+// definite. The first half over the dofs of `dofs` only (descending), where r is zero elsewhere:
+// L(k, i) ≠ 0 only for i on k's path, so y stays on the paths of r's dofs (constrained/delassus.hpp
+// sweeps a constraint's row so, over its two bodies' paths).
+template <class Tree, class T, class Dofs>
+constexpr void transposed_sweep(const tree_factor<Tree, T>& f, T* r, const Dofs& dofs) noexcept {
     constexpr const std::array<int, Tree::nv>& lambda = dof_parent<Tree>;
-    if (!f.positive_definite) {
-        r.fill(std::numeric_limits<T>::quiet_NaN());
-        return r;
-    }
-    for (std::size_t k = Tree::nv; k-- > 0;)
-        for (int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)])
-            r[static_cast<std::size_t>(i)] -= f.LD[k][static_cast<std::size_t>(i)] * r[k];
+    for (const std::size_t k : dofs)
+        for (int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)]) r[static_cast<std::size_t>(i)] -= f.LD[k][static_cast<std::size_t>(i)] * r[k];
+}
+template <class Tree>
+inline constexpr std::array<std::size_t, Tree::nv> all_dofs_descending = [] {
+    std::array<std::size_t, Tree::nv> out{};
+    for (std::size_t k = 0; k < Tree::nv; ++k) out[k] = Tree::nv - 1 - k;
+    return out;
+}();
+template <class Tree, class T>
+constexpr void lower_sweep(const tree_factor<Tree, T>& f, T* r) noexcept {
+    constexpr const std::array<int, Tree::nv>& lambda = dof_parent<Tree>;
     for (std::size_t k = 0; k < Tree::nv; ++k) {
         T x = r[k] * f.inv_D[k];
         for (int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)]) x -= f.LD[k][static_cast<std::size_t>(i)] * r[static_cast<std::size_t>(i)];
         r[k] = x;
     }
+}
+template <class Tree, class T>
+constexpr std::array<T, Tree::nv> tree_solve(const tree_factor<Tree, T>& f, std::array<T, Tree::nv> r) noexcept {
+    if (!f.positive_definite) {
+        r.fill(std::numeric_limits<T>::quiet_NaN());
+        return r;
+    }
+    transposed_sweep(f, r.data(), all_dofs_descending<Tree>);
+    lower_sweep(f, r.data());
     return r;
 }
 

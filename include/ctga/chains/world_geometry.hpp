@@ -24,18 +24,25 @@ namespace ctga::chains {
 
 namespace algorithm_detail {
 
+// Every body's pose in the world and every dof's free direction there: what a constraint's rows
+// read too (constrained/: a row pairs a force line with these screws).
 template <class Tree, class T>
-struct world_geometry {
+struct world_poses {
     std::array<motor_map<T>, Tree::size> pose;  // body i in the world
-    std::array<body_inertia<T>, Tree::size> N;  // body i's own inertia, world frame
     std::array<screw<T>, Tree::nv> S;           // dof k's free direction, world frame
+
+    explicit constexpr world_poses(uninitialized_t) : S(uninitialized_array<screw<T>, Tree::nv>()) {}
+};
+template <class Tree, class T>
+struct world_geometry : world_poses<Tree, T> {
+    std::array<body_inertia<T>, Tree::size> N;  // body i's own inertia, world frame
     std::array<T, Tree::nv> armature;           // dof k's armature (tree.hpp; 0 where a joint has none)
 
-    explicit constexpr world_geometry(uninitialized_t) : S(uninitialized_array<screw<T>, Tree::nv>()) {}
+    explicit constexpr world_geometry(uninitialized_t) : world_poses<Tree, T>(uninitialized) {}
 };
 
 template <class Tree, class T>
-constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+constexpr void fill_world_poses(world_poses<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
     each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
         using B = std::remove_cvref_t<decltype(b)>;
         using J = typename B::joint;
@@ -48,6 +55,10 @@ constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree,
             ((g.S[b.v_own + K] = frame_detail::moved_out(g.pose[i], J::template subspace<K, T>(L.joint))), ...);
         }(std::make_index_sequence<J::nv>{});
     });
+}
+template <class Tree, class T>
+constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+    fill_world_poses<Tree, T>(g, m, q);
     [&]<std::size_t... I>(std::index_sequence<I...>) { ((g.N[I] = m.template link<I>().inertia), ...); }(std::make_index_sequence<Tree::size>{});
     g.armature = armature_by_dof(m);
     for (std::size_t i = 0; i < Tree::size; ++i) g.N[i] = transform(g.pose[i], g.N[i]);

@@ -1,0 +1,186 @@
+// Constrained forward dynamics of a kinematic tree: q̈ and the constraint forces λ of
+//     H q̈ + C(q, q̇) = τ + Jᵀ λ,     J q̈ + J̇ q̇ = a_ref      (bilateral blocks)
+//     a = J q̈ + J̇ q̇,  K_μ ∋ λ_i ⊥ ã_i ∈ K*_μ               (contact blocks, at the acceleration level)
+// with H, C of crba and rnea, J the rows of constraint_rows.hpp (λ a row's force on A, in B's
+// constraint axes; a contact's (n, t1, t2)) and a_ref = −2ω φ̇ − ω² φ (Baumgarte, ω the settings'
+// stabilization; 0: none). Eliminating q̈ leaves the contact problem of constraints/ in λ,
+//     a = W λ + J H⁻¹ (τ − C) + J̇ q̇,    W = J H⁻¹ Jᵀ (delassus.hpp),
+// solved directly when every block is bilateral (below), and otherwise by
+// constraints::solve_contacts to the caller's tolerance on the natural-map residual, with its
+// report. Then q̈ = H⁻¹ (τ − C + Jᵀ λ), from the same tree factor.
+//
+// Redundant constraints (W singular: a planar four-bar closed by a point, whose rows along the
+// normal of its plane are zero; two feet welded to one floor), the bilateral case: W = L D Lᵀ
+// without pivoting, a pivot below `redundancy` times W's largest diagonal entry marks its row as
+// dependent on the rows before it, whose force is set to 0 (W is positive semidefinite: the pivot's
+// column below is then zero too, up to rounding). Consistent constraints are met exactly, with
+// the forces of the independent rows; inconsistent ones (two frames held at places that cannot
+// both be reached) leave a residual ‖W λ + q‖ > 0, reported with converged = false. result.rank
+// counts the rows kept. With contacts, a bilateral block's 3 × 3 is regularised by the same
+// fraction of W's diagonal before the sweeps invert it.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <span>
+
+#include "ctga/chains/crba.hpp"
+#include "ctga/chains/minverse.hpp"
+#include "ctga/chains/rnea.hpp"
+#include "ctga/constrained/constraint_rows.hpp"
+#include "ctga/constrained/constraint_set.hpp"
+#include "ctga/constrained/delassus.hpp"
+#include "ctga/constraints/contact_problem.hpp"
+#include "ctga/support/checked.hpp"
+#include "ctga/support/math.hpp"
+
+namespace ctga::constrained {
+
+template <class T>
+struct constrained_settings {
+    constraints::contact_settings<T> solver{};  // with contacts: the tolerance on the residual, the sweeps
+    T stabilization = T(0);                      // ω (1/s) of the bilateral rows' a_ref; 0: none
+    T redundancy = T(1e-10);                     // (above)
+};
+
+template <class Tree, class T, std::size_t Capacity>
+struct constrained_result {
+    error_code error = error_code::none;
+    chains::joint_vector<Tree, T> qdd{};
+    std::array<T, 3 * Capacity> force{};  // λ, three per block in block order
+    constraints::contact_report<T> report{};
+    std::size_t rank = 0;  // bilateral: the rows kept (above)
+};
+
+namespace dynamics_detail {
+// W λ = −q for a positive semidefinite W of m rows (above); returns the rows kept.
+template <class T, std::size_t N>
+constexpr std::size_t semidefinite_solve(const std::array<std::array<T, N>, N>& W, std::size_t m, const std::array<T, N>& q,
+                                         const T& redundancy, std::array<T, N>& x) noexcept {
+    std::array<std::array<T, N>, N> L;
+    std::array<T, N> d;
+    T scale = T(0);
+    for (std::size_t i = 0; i < m; ++i) scale = W[i][i] > scale ? W[i][i] : scale;
+    const T floor = redundancy * scale;
+    std::size_t kept = 0;
+    for (std::size_t k = 0; k < m; ++k) {
+        T dk = W[k][k];
+        for (std::size_t j = 0; j < k; ++j) dk -= L[k][j] * L[k][j] * d[j];
+        const bool keep = dk > floor;
+        d[k] = keep ? dk : T(0);
+        kept += keep;
+        for (std::size_t i = k + 1; i < m; ++i) {
+            T s = W[i][k];
+            for (std::size_t j = 0; j < k; ++j) s -= L[i][j] * L[k][j] * d[j];
+            L[i][k] = keep ? s / dk : T(0);
+        }
+    }
+    for (std::size_t i = 0; i < m; ++i) {  // L y = −q
+        T y = -q[i];
+        for (std::size_t j = 0; j < i; ++j) y -= L[i][j] * x[j];
+        x[i] = y;
+    }
+    for (std::size_t i = 0; i < m; ++i) x[i] = d[i] > T(0) ? x[i] / d[i] : T(0);
+    for (std::size_t i = m; i-- > 0;)  // Lᵀ λ = D⁻¹ y
+        for (std::size_t j = i + 1; j < m; ++j) x[i] -= L[j][i] * x[j];
+    return kept;
+}
+
+// The dense W of constraints/ (contact_problem.hpp's delassus_operator) with the bilateral blocks
+// named and regularised (above).
+template <class T, std::size_t N>
+struct blocks_delassus {
+    const std::array<std::array<T, N>, N>& W;
+    std::span<const T> q;
+    std::span<const constraint_block<T>> kinds;
+    T regularised;
+
+    [[nodiscard]] constexpr std::size_t contacts() const noexcept { return kinds.size(); }
+    [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept { return kinds[i].kind != block_kind::contact; }
+    [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept {
+        mat3<T> out;
+        for (std::size_t a = 0; a < 3; ++a)
+            for (std::size_t b = 0; b < 3; ++b) out[a][b] = W[3 * i + a][3 * i + b] + (a == b && bilateral(i) ? regularised : T(0));
+        return out;
+    }
+    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> r) const noexcept {
+        vec3<T> u{q[3 * i], q[3 * i + 1], q[3 * i + 2]};
+        for (std::size_t a = 0; a < 3; ++a)
+            for (std::size_t k = 0; k < q.size(); ++k) u[a] += W[3 * i + a][k] * r[k];
+        return u;
+    }
+    constexpr void apply(std::size_t, const vec3<T>&) const noexcept {}
+};
+}  // namespace dynamics_detail
+
+struct constrained_forward_dynamics_t {
+    template <class Tree, class T, std::size_t Capacity>
+    [[nodiscard]] constexpr constrained_result<Tree, T, Capacity> operator()(const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
+                                                                             const chains::joint_vector<Tree, T>& qd,
+                                                                             const chains::joint_vector<Tree, T>& tau,
+                                                                             const constraint_set<Tree, T, Capacity>& C,
+                                                                             const constrained_settings<T>& settings = {}) const noexcept {
+        static_assert(!Tree::has_mimic, "ctga::constrained: trees with mimic joints are not supported yet (their H is not the tree factor's)");
+        using namespace chains::algorithm_detail;
+        constexpr std::size_t N = 3 * Capacity;
+        constrained_result<Tree, T, Capacity> out;
+        for (std::size_t k = 0; k < Tree::nv; ++k)
+            if (!is_finite(qd[k]) || !is_finite(tau[k])) return out.error = error_code::non_finite, out;
+        for (const T& x : q)
+            if (!is_finite(x)) return out.error = error_code::non_finite, out;
+        // H = Lᵀ D L; z = L⁻ᵀ (τ − C)
+        const tree_factor<Tree, T> f = factor_tree<Tree>(chains::crba(m, q));
+        if (!f.positive_definite) return out.error = error_code::massless_subtree, out;
+        std::array<T, Tree::nv> z = chains::rnea(m, q, qd, chains::joint_vector<Tree, T>{});
+        for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = tau[k] - z[k];
+        transposed_sweep(f, z.data(), all_dofs_descending<Tree>);
+        // the rows, W, and q = J H⁻¹ (τ − C) + J̇ q̇ − a_ref
+        tree_motion<Tree, T> g(uninitialized);
+        fill_tree_motion(g, m, q, qd);
+        constraint_rows<Tree, T, Capacity> R;
+        fill_rows(R, g, C, qd);
+        const std::array<row_pattern<Tree>, Capacity> pattern = make_patterns(C);
+        delassus_parts<Tree, T, Capacity> P;
+        fill_delassus(P, f, R, std::span<const row_pattern<Tree>>(pattern.data(), C.size()));
+        const T w = settings.stabilization;
+        std::array<T, N> qv{};
+        for (std::size_t r = 0; r < R.count; ++r) {
+            T a = R.bias[r];
+            for (const std::size_t k : pattern[r / 3].span()) a += P.Y[r][k] * f.inv_D[k] * z[k];
+            if (C.blocks()[r / 3].kind != block_kind::contact) a += T(2) * w * R.rate[r] + w * w * R.gap[r];
+            qv[r] = a;
+        }
+        // λ
+        if (C.bilateral()) {
+            out.rank = dynamics_detail::semidefinite_solve(P.W, R.count, qv, settings.redundancy, out.force);
+            T sum = T(0);
+            for (std::size_t r = 0; r < R.count; ++r) {
+                T u = qv[r];
+                for (std::size_t s = 0; s < R.count; ++s) u += P.W[r][s] * out.force[s];
+                sum += u * u;
+            }
+            out.report.residual = math::sqrt(sum);
+            out.report.converged = out.report.residual <= settings.solver.tolerance;
+            if (!is_finite(out.report.residual)) return out.error = out.report.error = error_code::non_finite, out;
+        } else {
+            T scale = T(0);
+            for (std::size_t r = 0; r < R.count; ++r) scale = P.W[r][r] > scale ? P.W[r][r] : scale;
+            dynamics_detail::blocks_delassus<T, N> D{P.W, std::span<const T>(qv.data(), R.count), C.blocks(), settings.redundancy * scale};
+            std::array<T, Capacity> mu{};
+            for (std::size_t i = 0; i < C.size(); ++i) mu[i] = C.blocks()[i].mu;
+            out.report = constraints::solve_contacts<T>(D, std::span<const T>(mu.data(), C.size()), std::span<T>(out.force.data(), R.count), settings.solver);
+            out.rank = R.count;
+            if (out.report.error != error_code::none) return out.error = out.report.error, out;
+        }
+        // q̈ = L⁻¹ D⁻¹ (z + Yᵀ λ)
+        for (std::size_t r = 0; r < R.count; ++r)
+            for (const std::size_t k : pattern[r / 3].span()) z[k] += P.Y[r][k] * out.force[r];
+        lower_sweep(f, z.data());
+        out.qdd = z;
+        return out;
+    }
+};
+// (q̈, λ, the solver's report) of a tree under the constraints of C.
+inline constexpr constrained_forward_dynamics_t constrained_forward_dynamics{};
+
+}  // namespace ctga::constrained

@@ -1,0 +1,149 @@
+// The rows of a tree's constraints at a state (q, q̇), in the paper's terms (§5): a row is a force
+// line or a couple (a co-screw) paired with the bodies' screws.
+//
+// A block's rows are co-screws in the world frame. For a point or a contact: the lines through
+// x, the origin of A's constraint frame, along B's constraint axes e (a contact's normal e_z
+// first, then e_x, e_y), ℓ = (x × e, e) (collision/line_of_action.hpp); for an orientation the
+// couples (e, 0). Row ℓ's entry for dof k is
+//     J(ℓ, k) = ⟨ℓ, S_k⟩ for k on A's path only,  −⟨ℓ, S_k⟩ for k on B's path only,  0 else,
+// S_k the dof's free direction in the world (world_geometry.hpp): the row's rate ⟨ℓ, V_A − V_B⟩
+// is the speed along e of A's point at x relative to B's point there, or the relative angular
+// velocity about e. The dofs on both paths move both bodies alike and cancel; the rows visit
+// each body's path only (tables from the tree's type). Jᵀ λ applies the force λ e along ℓ to A
+// and its reaction to B: one line, so the pair's wrenches balance.
+//
+// J̇ q̇, the rows' acceleration at q̈ = 0 (the bias of the constrained dynamics): with the world
+// velocities V_i = V_λ(i) + Σ_k S_k q̇_k and the accelerations at q̈ = 0, A_i = A_λ(i) + Σ_k [V_i, S_k] q̇_k
+// (S_k is fixed in body i, so Ṡ_k = [V_i, S_k], §3's bracket: frame_jacobian.hpp), a body's
+// material point at x has the classical acceleration d/dt (v + ω × x) = (A at x) + ω × (v + ω × x),
+// so a line's bias is ⟨ℓ, A_A − A_B⟩ + e · (ω_A × v_A(x) − ω_B × v_B(x)), a couple's ⟨(e, 0), A_A − A_B⟩.
+// The rows' axes turn with B; where the constraint and its rate hold, the terms of that turning
+// vanish, so these rows are exact there (as Pinocchio's contact models are).
+//
+// The gap φ, in B's constraint axes: a point's R_Bᵀ (x_A − x_B) (a contact's normal component is its
+// signed distance, > 0 apart); an orientation's sin θ times the axis of R_Bᵀ R_A's turn
+// (½ vee(R − Rᵀ)).
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "ctga/chains/minverse.hpp"
+#include "ctga/chains/world_geometry.hpp"
+#include "ctga/collision/line_of_action.hpp"
+#include "ctga/constrained/constraint_set.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/screw.hpp"
+
+namespace ctga::constrained {
+
+namespace rows_detail {
+// The dofs on body b's path to the world (its own and its ancestors'), ascending, and whether dof
+// k is on it.
+template <class Tree>
+struct paths {
+    static constexpr auto on = [](std::size_t b, std::size_t k) { return Tree::supports(Tree::body_of_dof[k], b); };
+    static constexpr auto dof = [](std::size_t, std::size_t k) { return k; };
+    static constexpr auto lists = chains::algorithm_detail::make_dof_lists<Tree, std::size_t, decltype(on), decltype(dof)>();
+    static constexpr std::array<std::array<bool, Tree::nv>, Tree::size> member = [] {
+        std::array<std::array<bool, Tree::nv>, Tree::size> out{};
+        for (std::size_t b = 0; b < Tree::size; ++b)
+            for (std::size_t k = 0; k < Tree::nv; ++k) out[b][k] = on(b, k);
+        return out;
+    }();
+    [[nodiscard]] static constexpr bool holds(int b, std::size_t k) noexcept { return b >= 0 && member[static_cast<std::size_t>(b)][k]; }
+};
+}  // namespace rows_detail
+
+// Every body's pose, velocity and acceleration at q̈ = 0 in the world, and its dofs' S (above).
+template <class Tree, class T>
+struct tree_motion : chains::algorithm_detail::world_poses<Tree, T> {
+    std::array<screw<T>, Tree::size> V, A;
+    explicit constexpr tree_motion(uninitialized_t) : chains::algorithm_detail::world_poses<Tree, T>(uninitialized) {}
+};
+template <class Tree, class T>
+constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
+                                const chains::joint_vector<Tree, T>& qd) noexcept {
+    chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q);
+    for (std::size_t i = 0; i < Tree::size; ++i) {
+        const int p = Tree::parent[i];
+        const std::size_t o = Tree::v_offset[i], n = Tree::nv_of[i];
+        screw<T> V = p < 0 ? screw<T>{} : g.V[static_cast<std::size_t>(p)];
+        for (std::size_t k = o; k < o + n; ++k) V = V + g.S[k] * qd[k];
+        screw<T> A = p < 0 ? screw<T>{} : g.A[static_cast<std::size_t>(p)];
+        for (std::size_t k = o; k < o + n; ++k) A = A + bracket(V, g.S[k]) * qd[k];
+        g.V[i] = V;
+        g.A[i] = A;
+    }
+}
+
+// The rows of a set's blocks (3 each, in block order), dense over the dofs (zero off the paths).
+template <class Tree, class T, std::size_t Capacity>
+struct constraint_rows {
+    static constexpr std::size_t max_rows = 3 * Capacity;
+    std::size_t count = 0;
+    std::array<int, max_rows> a, b;                        // each row's two bodies
+    std::array<std::array<T, Tree::nv>, max_rows> J;
+    std::array<T, max_rows> gap, rate, bias;               // φ, J q̇, J̇ q̇
+};
+
+namespace rows_detail {
+template <class T>
+[[nodiscard]] constexpr vec3<T> angular_of(const screw<T>& s) noexcept { return {s[0], s[1], s[2]}; }
+template <class T>
+[[nodiscard]] constexpr vec3<T> linear_of(const screw<T>& s) noexcept { return {s[3], s[4], s[5]}; }
+// e · (ω × (v + ω × x)) for a body of velocity (ω, v): the part of its point's acceleration at x
+// that the spatial acceleration lacks
+template <class T>
+[[nodiscard]] constexpr T turning(const screw<T>& V, const vec3<T>& x, const vec3<T>& e) noexcept {
+    const vec3<T> w = angular_of(V);
+    return linear3::dot(e, linear3::cross(w, linear3::add(linear_of(V), linear3::cross(w, x))));
+}
+}  // namespace rows_detail
+
+template <class Tree, class T, std::size_t Capacity>
+constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motion<Tree, T>& g, const constraint_set<Tree, T, Capacity>& C,
+                         const chains::joint_vector<Tree, T>& qd) noexcept {
+    using P = rows_detail::paths<Tree>;
+    const auto world_of = [&](int body, const motor_map<T>& at) { return body < 0 ? at : compose(g.pose[static_cast<std::size_t>(body)], at); };
+    const auto moving = [&](int body, const std::array<screw<T>, Tree::size>& X) { return body < 0 ? screw<T>{} : X[static_cast<std::size_t>(body)]; };
+    R.count = 0;
+    for (const constraint_block<T>& c : C.blocks()) {
+        const motor_map<T> WA = world_of(c.a, c.at_a), WB = world_of(c.b, c.at_b);
+        const vec3<T>& x = WA.t;
+        const screw<T> VA = moving(c.a, g.V), VB = moving(c.b, g.V), AA = moving(c.a, g.A), AB = moving(c.b, g.A);
+        const vec3<T> d = linear3::apply_transposed(WB.R, linear3::sub(WA.t, WB.t));
+        mat3<T> turn;  // R_Bᵀ R_A
+        for (std::size_t r = 0; r < 3; ++r)
+            for (std::size_t s = 0; s < 3; ++s) turn[r][s] = WB.R[0][r] * WA.R[0][s] + WB.R[1][r] * WA.R[1][s] + WB.R[2][r] * WA.R[2][s];
+        const vec3<T> tilt{(turn[2][1] - turn[1][2]) / T(2), (turn[0][2] - turn[2][0]) / T(2), (turn[1][0] - turn[0][1]) / T(2)};
+        for (std::size_t j = 0; j < 3; ++j) {
+            const std::size_t axis = c.kind == block_kind::contact ? (j + 2) % 3 : j;  // contact: z, x, y
+            const vec3<T> e{WB.R[0][axis], WB.R[1][axis], WB.R[2][axis]};
+            const bool line = c.kind != block_kind::orientation;
+            const coscrew<T> l = line ? collision::line_of_action(x, e) : coscrew<T>{e[0], e[1], e[2], T(0), T(0), T(0)};
+            const std::size_t r = R.count++;
+            R.a[r] = c.a;
+            R.b[r] = c.b;
+            auto& row = R.J[r];
+            row.fill(T(0));
+            const auto put = [&](int body, int other, T sign) {
+                if (body < 0) return;
+                const std::size_t u = static_cast<std::size_t>(body);
+                for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) {
+                    const std::size_t k = P::lists.list[n];
+                    if (!P::holds(other, k)) row[k] = sign * pairing(l, g.S[k]);
+                }
+            };
+            put(c.a, c.b, T(1));
+            put(c.b, c.a, T(-1));
+            T rate = T(0);
+            for (std::size_t k = 0; k < Tree::nv; ++k) rate += row[k] * qd[k];
+            R.rate[r] = rate;
+            R.bias[r] = pairing(l, AA) - pairing(l, AB) + (line ? rows_detail::turning(VA, x, e) - rows_detail::turning(VB, x, e) : T(0));
+            R.gap[r] = c.kind == block_kind::orientation ? tilt[axis] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis];
+        }
+    }
+}
+
+}  // namespace ctga::constrained

@@ -7,6 +7,8 @@
 // With CTGA_CHAINS_SCALING it is ctga_chains_scaling_* instead: rnea_chain/<N>/<implementation>,
 // aba_chain/<N>/…, crba_chain/<N>/… for the N listed (chains_scaling.cpp). With the development
 // robots found (CMake: CTGA_BENCH_ROBOTS_DIR), their rows too: rnea_<robot>/ctga, … (chains_robot.cpp).
+// The quadruped with its feet held: constrained_fd_quadruped/ctga, delassus_quadruped/ctga
+// (chains_constrained.cpp).
 //
 // Each kernel is one non-inlined call (chain_kernel) on one of 64 random states in memory,
 // cycling, so nothing folds and callgrind can count the instructions of a call alone:
@@ -25,6 +27,7 @@ int main(int argc, char** argv) {
     add_chain30(table);
     add_chain30_crba_fk(table);
     add_legged(table);
+    add_constrained(table);
     add_humanoid(table);
     add_derivatives_arm7(table);
     add_derivatives_chain30(table);

@@ -392,21 +392,15 @@ constexpr tree_matrix<Tree, T, sparsity::components> tree_inverse(const tree_fac
 }
 // H⁻¹ r from the factor (Featherstone Table 6.4) in its two halves: Lᵀ y = r from the leaves
 // (transposed_sweep), then L x = D⁻¹ y from the root (lower_sweep); NaN when H is not positive
-// definite. The first half over the dofs of `dofs` only (descending), where r is zero elsewhere:
-// L(k, i) ≠ 0 only for i on k's path, so y stays on the paths of r's dofs (constrained/delassus.hpp
-// sweeps a constraint's row so, over its two bodies' paths).
-template <class Tree, class T, class Dofs>
-constexpr void transposed_sweep(const tree_factor<Tree, T>& f, T* r, const Dofs& dofs) noexcept {
+// definite. The first half as its steps y_i −= L(k, i) y_k, k from the last dof down and i on k's
+// path, handed to `step(k, i, L(k, i))`: for one vector (tree_solve), or for the columns of
+// several at once (constrained/delassus.hpp: J's rows, a vector register at a time).
+template <class Tree, class T, class Step>
+constexpr void transposed_sweep(const tree_factor<Tree, T>& f, Step&& step) noexcept {
     constexpr const std::array<int, Tree::nv>& lambda = dof_parent<Tree>;
-    for (const std::size_t k : dofs)
-        for (int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)]) r[static_cast<std::size_t>(i)] -= f.LD[k][static_cast<std::size_t>(i)] * r[k];
+    for (std::size_t k = Tree::nv; k-- > 0;)
+        for (int i = lambda[k]; i >= 0; i = lambda[static_cast<std::size_t>(i)]) step(k, static_cast<std::size_t>(i), f.LD[k][static_cast<std::size_t>(i)]);
 }
-template <class Tree>
-inline constexpr std::array<std::size_t, Tree::nv> all_dofs_descending = [] {
-    std::array<std::size_t, Tree::nv> out{};
-    for (std::size_t k = 0; k < Tree::nv; ++k) out[k] = Tree::nv - 1 - k;
-    return out;
-}();
 template <class Tree, class T>
 constexpr void lower_sweep(const tree_factor<Tree, T>& f, T* r) noexcept {
     constexpr const std::array<int, Tree::nv>& lambda = dof_parent<Tree>;
@@ -422,7 +416,7 @@ constexpr std::array<T, Tree::nv> tree_solve(const tree_factor<Tree, T>& f, std:
         r.fill(std::numeric_limits<T>::quiet_NaN());
         return r;
     }
-    transposed_sweep(f, r.data(), all_dofs_descending<Tree>);
+    transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { r[i] -= l * r[k]; });
     lower_sweep(f, r.data());
     return r;
 }

@@ -133,22 +133,25 @@ struct constrained_forward_dynamics_t {
         if (!f.positive_definite) return out.error = error_code::massless_subtree, out;
         std::array<T, Tree::nv> z = chains::rnea(m, q, qd, chains::joint_vector<Tree, T>{});
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = tau[k] - z[k];
-        transposed_sweep(f, z.data(), all_dofs_descending<Tree>);
+        transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
         // the rows, W, and q = J H⁻¹ (τ − C) + J̇ q̇ − a_ref
         tree_motion<Tree, T> g(uninitialized);
         fill_tree_motion(g, m, q, qd);
         constraint_rows<Tree, T, Capacity> R;
         fill_rows(R, g, C, qd);
-        const std::array<row_pattern<Tree>, Capacity> pattern = make_patterns(C);
         delassus_parts<Tree, T, Capacity> P;
-        fill_delassus(P, f, R, std::span<const row_pattern<Tree>>(pattern.data(), C.size()));
-        const T w = settings.stabilization;
+        fill_delassus(P, f, R);
         std::array<T, N> qv{};
+        for (std::size_t k = 0; k < Tree::nv; ++k) {
+            const T c = f.inv_D[k] * z[k];
+            each_block(R.reach[k], [&](std::size_t p) {
+                for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) qv[r] += P.Y[k][r] * c;
+            });
+        }
+        const T w = settings.stabilization;
         for (std::size_t r = 0; r < R.count; ++r) {
-            T a = R.bias[r];
-            for (const std::size_t k : pattern[r / 3].span()) a += P.Y[r][k] * f.inv_D[k] * z[k];
-            if (C.blocks()[r / 3].kind != block_kind::contact) a += T(2) * w * R.rate[r] + w * w * R.gap[r];
-            qv[r] = a;
+            qv[r] += R.bias[r];
+            if (C.blocks()[r / 3].kind != block_kind::contact) qv[r] += T(2) * w * R.rate[r] + w * w * R.gap[r];
         }
         // λ
         if (C.bilateral()) {
@@ -173,8 +176,10 @@ struct constrained_forward_dynamics_t {
             if (out.report.error != error_code::none) return out.error = out.report.error, out;
         }
         // q̈ = L⁻¹ D⁻¹ (z + Yᵀ λ)
-        for (std::size_t r = 0; r < R.count; ++r)
-            for (const std::size_t k : pattern[r / 3].span()) z[k] += P.Y[r][k] * out.force[r];
+        for (std::size_t k = 0; k < Tree::nv; ++k)
+            each_block(R.reach[k], [&](std::size_t p) {
+                for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) z[k] += P.Y[k][r] * out.force[r];
+            });
         lower_sweep(f, z.data());
         out.qdd = z;
         return out;

@@ -27,6 +27,7 @@
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 
 #include "ctga/chains/minverse.hpp"
 #include "ctga/chains/world_geometry.hpp"
@@ -77,13 +78,16 @@ constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tre
     }
 }
 
-// The rows of a set's blocks (3 each, in block order), dense over the dofs (zero off the paths).
+// The rows of a set's blocks (3 each, in block order), stored by dof: columns[k][r] = J(r, k),
+// zero off the rows' paths and past the last row; reach[k] has bit p set when dof k is on block
+// p's paths (delassus.hpp visits those blocks' rows only: a foot's rows reach its leg and the base).
 template <class Tree, class T, std::size_t Capacity>
 struct constraint_rows {
+    static_assert(Capacity <= 64, "ctga::constrained: a constraint set holds at most 64 blocks (a 64-bit mask per dof says which reach it)");
     static constexpr std::size_t max_rows = 3 * Capacity;
     std::size_t count = 0;
-    std::array<int, max_rows> a, b;                        // each row's two bodies
-    std::array<std::array<T, Tree::nv>, max_rows> J;
+    std::array<std::array<T, max_rows>, Tree::nv> columns;
+    std::array<std::uint64_t, Tree::nv> reach;
     std::array<T, max_rows> gap, rate, bias;               // φ, J q̇, J̇ q̇
 };
 
@@ -108,6 +112,8 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
     const auto world_of = [&](int body, const motor_map<T>& at) { return body < 0 ? at : compose(g.pose[static_cast<std::size_t>(body)], at); };
     const auto moving = [&](int body, const std::array<screw<T>, Tree::size>& X) { return body < 0 ? screw<T>{} : X[static_cast<std::size_t>(body)]; };
     R.count = 0;
+    for (auto& column : R.columns) column.fill(T(0));
+    R.reach.fill(0);
     for (const constraint_block<T>& c : C.blocks()) {
         const motor_map<T> WA = world_of(c.a, c.at_a), WB = world_of(c.b, c.at_b);
         const vec3<T>& x = WA.t;
@@ -123,22 +129,21 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
             const bool line = c.kind != block_kind::orientation;
             const coscrew<T> l = line ? collision::line_of_action(x, e) : coscrew<T>{e[0], e[1], e[2], T(0), T(0), T(0)};
             const std::size_t r = R.count++;
-            R.a[r] = c.a;
-            R.b[r] = c.b;
-            auto& row = R.J[r];
-            row.fill(T(0));
+            T rate = T(0);
             const auto put = [&](int body, int other, T sign) {
                 if (body < 0) return;
                 const std::size_t u = static_cast<std::size_t>(body);
                 for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) {
                     const std::size_t k = P::lists.list[n];
-                    if (!P::holds(other, k)) row[k] = sign * pairing(l, g.S[k]);
+                    R.reach[k] |= std::uint64_t(1) << (r / 3);
+                    if (P::holds(other, k)) continue;  // (moves both alike)
+                    const T entry = sign * pairing(l, g.S[k]);
+                    R.columns[k][r] = entry;
+                    rate += entry * qd[k];
                 }
             };
             put(c.a, c.b, T(1));
             put(c.b, c.a, T(-1));
-            T rate = T(0);
-            for (std::size_t k = 0; k < Tree::nv; ++k) rate += row[k] * qd[k];
             R.rate[r] = rate;
             R.bias[r] = pairing(l, AA) - pairing(l, AB) + (line ? rows_detail::turning(VA, x, e) - rows_detail::turning(VB, x, e) : T(0));
             R.gap[r] = c.kind == block_kind::orientation ? tilt[axis] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis];

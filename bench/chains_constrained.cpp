@@ -1,0 +1,68 @@
+// ctga_chains_bench's constrained dynamics of the quadruped (Solo 12's numbers on the legged tree,
+// chains_legged.cpp's fixture): its four feet (the lower legs' points at (0, ±0.008, −0.16), where
+// the URDF's feet are) held where they are in each state, four 3-D contacts (constrained/):
+//   constrained_fd_quadruped/ctga   q̈ and the 12 contact forces (constrained_forward_dynamics)
+//   delassus_quadruped/ctga         the 12 × 12 Delassus operator J H⁻¹ Jᵀ (delassus)
+// beside the same run's aba_quadruped/ctga (the target: constrained forward dynamics ≤ 2× ABA).
+#include <ctga/constrained/constrained_dynamics.hpp>
+
+#include "chains_kernels.hpp"
+
+namespace bench::chains {
+namespace {
+namespace cn = ctga::constrained;
+using feet = cn::constraint_set<legged_tree, double, 4>;
+
+struct quadruped_case {
+    fixture<legged_tree> f = make_fixture<legged_tree>(solo12(), 74);
+    std::array<feet, 64> held{};
+
+    quadruped_case() {
+        for (std::size_t s = 0; s < 64; ++s) {
+            const auto k = ch::forward_kinematics(f.m, f.states[s].q);
+            for (int leg = 0; leg < 4; ++leg) {
+                const std::size_t shank = static_cast<std::size_t>(3 + 3 * leg);
+                const double y = leg % 2 == 0 ? 0.008 : -0.008;
+                cn::constraint_block<double> b;
+                b.a = static_cast<int>(shank);
+                b.at_a.t = {0, y, -0.16};
+                b.at_b = ctga::compose(k.pose[shank], b.at_a);  // held where it is
+                if (held[s].add(b) != ctga::error_code::none) throw std::logic_error("chains_constrained: a foot refused");
+            }
+        }
+    }
+};
+
+template <class Kernel>
+void add_kernel(std::vector<entry>& table, const std::string& name, const quadruped_case& c, Kernel kernel) {
+    const quadruped_case* p = &c;
+    table.push_back({name,
+                     [p, kernel](benchmark::State& st) {
+                         std::size_t k = 0;
+                         for (auto _ : st) {
+                             auto r = kernel(*p, k);
+                             benchmark::DoNotOptimize(r);
+                             k = (k + 1) & 63;
+                         }
+                     },
+                     [p, kernel](std::size_t calls) {
+                         for (std::size_t i = 0; i < calls; ++i) {
+                             auto r = kernel(*p, i & 63);
+                             benchmark::DoNotOptimize(r);
+                         }
+                     }});
+}
+
+[[gnu::noinline]] auto constrained_fd(const quadruped_case& c, std::size_t k) {
+    const auto& s = c.f.states[k];
+    return cn::constrained_forward_dynamics(c.f.m, s.q, s.qd, s.tau, c.held[k]);
+}
+[[gnu::noinline]] auto delassus_of(const quadruped_case& c, std::size_t k) { return cn::delassus(c.f.m, c.f.states[k].q, c.held[k]); }
+}  // namespace
+
+void add_constrained(std::vector<entry>& table) {
+    static const quadruped_case c;
+    add_kernel(table, "constrained_fd_quadruped/ctga", c, constrained_fd);
+    add_kernel(table, "delassus_quadruped/ctga", c, delassus_of);
+}
+}  // namespace bench::chains

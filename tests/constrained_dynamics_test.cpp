@@ -285,6 +285,26 @@ TEST_CASE("frictional contacts on a tree against the independent fc3d reference"
     }
 }
 
+// One classical RK4 step of q̈ = acc(q, q̇) on arrays (every joint here is a scalar).
+template <class Acc, class Q, class V>
+void rk4_step(Acc&& acc, Q& q, V& v, double h) {
+    const auto add = [](auto y, const auto& dy, double t) {
+        for (std::size_t i = 0; i < y.size(); ++i) y[i] += t * dy[i];
+        return y;
+    };
+    const auto a1 = acc(q, v);
+    const auto q2 = add(q, v, h / 2), v2 = add(v, a1, h / 2);
+    const auto a2 = acc(q2, v2);
+    const auto q3 = add(q, v2, h / 2), v3 = add(v, a2, h / 2);
+    const auto a3 = acc(q3, v3);
+    const auto q4 = add(q, v3, h), v4 = add(v, a3, h);
+    const auto a4 = acc(q4, v4);
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        q[i] += h / 6 * (v[i] + 2 * v2[i] + 2 * v3[i] + v4[i]);
+        v[i] += h / 6 * (a1[i] + 2 * a2[i] + 2 * a3[i] + a4[i]);
+    }
+}
+
 // ---- a four-bar linkage ------------------------------------------------------------------------
 // crank a about the origin, coupler b on its end, rocker c about (d, 0, 0); the coupler's end
 // held on the rocker's by a point constraint. Planar in x, y, gravity along −y.
@@ -339,23 +359,8 @@ TEST_CASE("a four-bar linkage closed by a constraint follows Freudenstein's equa
     };
     const double h = 2.5e-4;
     double worst_residual = 0;
-    for (int step = 0; step < 8000; ++step) {  // RK4 on (q, q̇)
-        const auto add = [](const auto& x, const auto& dx, double t) {
-            auto y = x;
-            for (std::size_t i = 0; i < y.size(); ++i) y[i] += t * dx[i];
-            return y;
-        };
-        const auto a1 = acc(q, v);
-        const auto q2 = add(q, v, h / 2), v2 = add(v, a1, h / 2);
-        const auto a2 = acc(q2, v2);
-        const auto q3 = add(q, v2, h / 2), v3 = add(v, a2, h / 2);
-        const auto a3 = acc(q3, v3);
-        const auto q4 = add(q, v3, h), v4 = add(v, a3, h);
-        const auto a4 = acc(q4, v4);
-        for (std::size_t i = 0; i < 3; ++i) {
-            q[i] += h / 6 * (v[i] + 2 * v2[i] + 2 * v3[i] + v4[i]);
-            v[i] += h / 6 * (a1[i] + 2 * a2[i] + 2 * a3[i] + a4[i]);
-        }
+    for (int step = 0; step < 8000; ++step) {
+        rk4_step(acc, q, v, h);
         worst_residual = std::max(worst_residual, std::abs(freudenstein(q[0], q[2])));
     }
     std::printf("four-bar: crank %.6g rad, speed %.6g rad/s\n", q[0], v[0]);
@@ -396,26 +401,10 @@ TEST_CASE("a pendulum closed as a loop moves as the same pendulum built as a tre
     double th = q[2], om = v[2];
     const double h = 1e-3;
     for (int step = 0; step < 1000; ++step) {
-        const auto rk4 = [&](auto&& acc, auto& x, auto& xd) {
-            const auto add = [](auto y, const auto& dy, double t) {
-                for (std::size_t i = 0; i < y.size(); ++i) y[i] += t * dy[i];
-                return y;
-            };
-            const auto a1 = acc(x, xd);
-            const auto x2 = add(x, xd, h / 2), v2 = add(xd, a1, h / 2);
-            const auto a2 = acc(x2, v2);
-            const auto x3 = add(x, v2, h / 2), v3 = add(xd, a2, h / 2);
-            const auto a3 = acc(x3, v3);
-            const auto x4 = add(x, v3, h), v4 = add(xd, a3, h);
-            const auto a4 = acc(x4, v4);
-            for (std::size_t i = 0; i < x.size(); ++i) {
-                x[i] += h / 6 * (xd[i] + 2 * v2[i] + 2 * v3[i] + v4[i]);
-                xd[i] += h / 6 * (a1[i] + 2 * a2[i] + 2 * a3[i] + a4[i]);
-            }
-        };
-        rk4([&](const auto& x, const auto& xd) { return cn::constrained_forward_dynamics(loop, x, xd, ch::joint_vector<slides>{}, C, s).qdd; }, q, v);
+        rk4_step([&](const auto& x, const auto& xd) { return cn::constrained_forward_dynamics(loop, x, xd, ch::joint_vector<slides>{}, C, s).qdd; },
+                 q, v, h);
         std::array<double, 1> x{th}, xd{om};
-        rk4([&](const auto& y, const auto& yd) { return ch::aba(tree, y, yd, ch::joint_vector<hinge>{}); }, x, xd);
+        rk4_step([&](const auto& y, const auto& yd) { return ch::aba(tree, y, yd, ch::joint_vector<hinge>{}); }, x, xd, h);
         th = x[0], om = xd[0];
     }
     CHECK(w("θ after 1 s", std::abs(q[2] - th)) < 1e-9);

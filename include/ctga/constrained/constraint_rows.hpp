@@ -29,7 +29,6 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "ctga/chains/minverse.hpp"
 #include "ctga/chains/world_geometry.hpp"
 #include "ctga/collision/line_of_action.hpp"
 #include "ctga/constrained/constraint_set.hpp"

@@ -3,7 +3,8 @@
 //     a = J q̈ + J̇ q̇,  K_μ ∋ λ_i ⊥ ã_i ∈ K*_μ               (contact blocks, at the acceleration level)
 // with H, C of crba and rnea, J the rows of constraint_rows.hpp (λ a row's force on A, in B's
 // constraint axes; a contact's (n, t1, t2)) and a_ref = −2ω φ̇ − ω² φ (Baumgarte, ω the settings'
-// stabilization; 0: none). Eliminating q̈ leaves the contact problem of constraints/ in λ,
+// stabilization; 0: none); a limit's row (constraint_set.hpp) λ ≥ 0 ⊥ a ≥ 0, a joint friction's
+// |λ| ≤ its bound, a = 0 while inside (both solved with the contacts). Eliminating q̈ leaves the contact problem of constraints/ in λ,
 //     a = W λ + J H⁻¹ (τ − C) + J̇ q̇,    W = J H⁻¹ Jᵀ (delassus.hpp),
 // solved directly when every block is bilateral (below), and otherwise by
 // constraints::solve_contacts to the caller's tolerance on the natural-map residual, with its
@@ -22,6 +23,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <span>
 
 #include "ctga/chains/crba.hpp"
@@ -86,17 +88,28 @@ constexpr std::size_t semidefinite_solve(const std::array<std::array<T, N>, N>& 
     return kept;
 }
 
-// The dense W of constraints/ (contact_problem.hpp's delassus_operator) with the bilateral blocks
-// named and regularised (above).
+// The dense W of constraints/ (contact_problem.hpp's delassus_operator) with each block's kind:
+// point and orientation blocks bilateral (their 3 × 3 regularised, above), a limit's row bounded
+// below by 0, a joint friction's row by ± its bound (times `scale`: 1 for forces, the step for
+// impulses), the limit's and friction's empty rows bounded to 0.
 template <class T, std::size_t N>
 struct blocks_delassus {
     const std::array<std::array<T, N>, N>& W;
     std::span<const T> q;
     std::span<const constraint_block<T>> kinds;
-    T regularised;
+    T regularised, scale;
 
     [[nodiscard]] constexpr std::size_t contacts() const noexcept { return kinds.size(); }
-    [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept { return kinds[i].kind != block_kind::contact; }
+    [[nodiscard]] constexpr bool bilateral(std::size_t i) const noexcept {
+        return kinds[i].kind == block_kind::point || kinds[i].kind == block_kind::orientation;
+    }
+    [[nodiscard]] constexpr bool bounded(std::size_t i) const noexcept { return on_joint(kinds[i].kind); }
+    [[nodiscard]] constexpr std::array<vec3<T>, 2> bounds(std::size_t i) const noexcept {
+        constexpr T inf = std::numeric_limits<T>::infinity();
+        const T f = scale * kinds[i].bound;
+        return kinds[i].kind == block_kind::joint_friction ? std::array<vec3<T>, 2>{vec3<T>{-f, T(0), T(0)}, vec3<T>{f, T(0), T(0)}}
+                                                           : std::array<vec3<T>, 2>{vec3<T>{}, vec3<T>{inf, T(0), T(0)}};
+    }
     [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept {
         mat3<T> out;
         for (std::size_t a = 0; a < 3; ++a)
@@ -111,6 +124,69 @@ struct blocks_delassus {
     }
     constexpr void apply(std::size_t, const vec3<T>&) const noexcept {}
 };
+
+// J H⁻¹ b = Y D⁻¹ z for z = L⁻ᵀ b: each dof's D⁻¹ z_k spread over the rows of the blocks reaching it.
+template <class Tree, class T, std::size_t Capacity>
+constexpr void rows_of(const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z,
+                       const constraint_rows<Tree, T, Capacity>& R, const delassus_parts<Tree, T, Capacity>& P,
+                       std::array<T, 3 * Capacity>& out) noexcept {
+    out.fill(T(0));
+    for (std::size_t k = 0; k < Tree::nv; ++k) {
+        const T c = f.inv_D[k] * z[k];
+        each_block(R.reach[k], [&](std::size_t p) {
+            for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) out[r] += P.Y[k][r] * c;
+        });
+    }
+}
+
+// λ with W λ + q in the blocks' sets (bilateral sets directly, above; else by solve_contacts from
+// the warm start in λ), then z ← L⁻¹ D⁻¹ (z + Yᵀ λ): H⁻¹ (b + Jᵀ λ) for z = L⁻ᵀ b. `scale` as in
+// blocks_delassus. Returns the rows kept (bilateral) or all rows.
+template <class Tree, class T, std::size_t Capacity>
+constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tree, T>& f, std::array<T, Tree::nv>& z,
+                                 const constraint_rows<Tree, T, Capacity>& R, const delassus_parts<Tree, T, Capacity>& P,
+                                 const std::array<T, 3 * Capacity>& qv, const constraint_set<Tree, T, Capacity>& C,
+                                 const constrained_settings<T>& settings, const T& scale, std::array<T, 3 * Capacity>& force,
+                                 constraints::contact_report<T>& report) noexcept {
+    std::size_t rank = R.count;
+    if (C.bilateral()) {
+        rank = semidefinite_solve(P.W, R.count, qv, settings.redundancy, force);
+        T sum = T(0);
+        for (std::size_t r = 0; r < R.count; ++r) {
+            T u = qv[r];
+            for (std::size_t s = 0; s < R.count; ++s) u += P.W[r][s] * force[s];
+            sum += u * u;
+        }
+        report.residual = math::sqrt(sum);
+        report.converged = report.residual <= settings.solver.tolerance;
+        if (!is_finite(report.residual)) report.error = error_code::non_finite;
+    } else {
+        T largest = T(0);
+        for (std::size_t r = 0; r < R.count; ++r) largest = P.W[r][r] > largest ? P.W[r][r] : largest;
+        blocks_delassus<T, 3 * Capacity> D{P.W, std::span<const T>(qv.data(), R.count), C.blocks(), settings.redundancy * largest, scale};
+        std::array<T, Capacity> mu{};
+        for (std::size_t i = 0; i < C.size(); ++i) mu[i] = C.blocks()[i].mu;
+        report = constraints::solve_contacts<T>(D, std::span<const T>(mu.data(), C.size()), std::span<T>(force.data(), R.count), settings.solver);
+    }
+    if (report.error != error_code::none) return rank;
+    for (std::size_t k = 0; k < Tree::nv; ++k)
+        each_block(R.reach[k], [&](std::size_t p) {
+            for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) z[k] += P.Y[k][r] * force[r];
+        });
+    chains::algorithm_detail::lower_sweep(f, z.data());
+    return rank;
+}
+
+// Every number of the arrays (q, q̇, τ) finite.
+template <class... V>
+[[nodiscard]] constexpr bool finite_state(const V&... v) noexcept {
+    const auto finite = [](const auto& x) {
+        for (const auto& e : x)
+            if (!is_finite(e)) return false;
+        return true;
+    };
+    return (finite(v) && ...);
+}
 }  // namespace dynamics_detail
 
 struct constrained_forward_dynamics_t {
@@ -122,12 +198,8 @@ struct constrained_forward_dynamics_t {
                                                                              const constrained_settings<T>& settings = {}) const noexcept {
         static_assert(!Tree::has_mimic, "ctga::constrained: trees with mimic joints are not supported yet (their H is not the tree factor's)");
         using namespace chains::algorithm_detail;
-        constexpr std::size_t N = 3 * Capacity;
         constrained_result<Tree, T, Capacity> out;
-        for (std::size_t k = 0; k < Tree::nv; ++k)
-            if (!is_finite(qd[k]) || !is_finite(tau[k])) return out.error = error_code::non_finite, out;
-        for (const T& x : q)
-            if (!is_finite(x)) return out.error = error_code::non_finite, out;
+        if (!dynamics_detail::finite_state(q, qd, tau)) return out.error = error_code::non_finite, out;
         // H = Lᵀ D L; z = L⁻ᵀ (τ − C)
         const tree_factor<Tree, T> f = factor_tree<Tree>(chains::crba(m, q));
         if (!f.positive_definite) return out.error = error_code::massless_subtree, out;
@@ -138,49 +210,20 @@ struct constrained_forward_dynamics_t {
         tree_motion<Tree, T> g(uninitialized);
         fill_tree_motion(g, m, q, qd);
         constraint_rows<Tree, T, Capacity> R;
-        fill_rows(R, g, C, qd);
+        fill_rows(R, g, C, q, qd);
         delassus_parts<Tree, T, Capacity> P;
         fill_delassus(P, f, R);
-        std::array<T, N> qv{};
-        for (std::size_t k = 0; k < Tree::nv; ++k) {
-            const T c = f.inv_D[k] * z[k];
-            each_block(R.reach[k], [&](std::size_t p) {
-                for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) qv[r] += P.Y[k][r] * c;
-            });
-        }
+        std::array<T, 3 * Capacity> qv;
+        dynamics_detail::rows_of(f, z, R, P, qv);
         const T w = settings.stabilization;
         for (std::size_t r = 0; r < R.count; ++r) {
             qv[r] += R.bias[r];
-            if (C.blocks()[r / 3].kind != block_kind::contact) qv[r] += T(2) * w * R.rate[r] + w * w * R.gap[r];
+            const block_kind kind = C.blocks()[r / 3].kind;
+            if (kind == block_kind::point || kind == block_kind::orientation) qv[r] += T(2) * w * R.rate[r] + w * w * R.gap[r];
         }
-        // λ
-        if (C.bilateral()) {
-            out.rank = dynamics_detail::semidefinite_solve(P.W, R.count, qv, settings.redundancy, out.force);
-            T sum = T(0);
-            for (std::size_t r = 0; r < R.count; ++r) {
-                T u = qv[r];
-                for (std::size_t s = 0; s < R.count; ++s) u += P.W[r][s] * out.force[s];
-                sum += u * u;
-            }
-            out.report.residual = math::sqrt(sum);
-            out.report.converged = out.report.residual <= settings.solver.tolerance;
-            if (!is_finite(out.report.residual)) return out.error = out.report.error = error_code::non_finite, out;
-        } else {
-            T scale = T(0);
-            for (std::size_t r = 0; r < R.count; ++r) scale = P.W[r][r] > scale ? P.W[r][r] : scale;
-            dynamics_detail::blocks_delassus<T, N> D{P.W, std::span<const T>(qv.data(), R.count), C.blocks(), settings.redundancy * scale};
-            std::array<T, Capacity> mu{};
-            for (std::size_t i = 0; i < C.size(); ++i) mu[i] = C.blocks()[i].mu;
-            out.report = constraints::solve_contacts<T>(D, std::span<const T>(mu.data(), C.size()), std::span<T>(out.force.data(), R.count), settings.solver);
-            out.rank = R.count;
-            if (out.report.error != error_code::none) return out.error = out.report.error, out;
-        }
-        // q̈ = L⁻¹ D⁻¹ (z + Yᵀ λ)
-        for (std::size_t k = 0; k < Tree::nv; ++k)
-            each_block(R.reach[k], [&](std::size_t p) {
-                for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) z[k] += P.Y[k][r] * out.force[r];
-            });
-        lower_sweep(f, z.data());
+        // λ, then q̈ = L⁻¹ D⁻¹ (z + Yᵀ λ)
+        out.rank = dynamics_detail::solve_rows(f, z, R, P, qv, C, settings, T(1), out.force, out.report);
+        if (out.report.error != error_code::none) return out.error = out.report.error, out;
         out.qdd = z;
         return out;
     }

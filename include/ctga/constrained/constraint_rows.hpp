@@ -20,6 +20,10 @@
 // The rows' axes turn with B; where the constraint and its rate hold, the terms of that turning
 // vanish, so these rows are exact there (as Pinocchio's contact models are).
 //
+// A joint's block (a limit, its friction: constraint_set.hpp) has the one row ±e_k on its dof
+// (+ for a lower limit, − for an upper), its gap ±(q_k − bound), and two empty rows; it reaches
+// the dofs of its body's path (the sweep of delassus.hpp carries e_k up to them).
+//
 // The gap φ, in B's constraint axes: a point's R_Bᵀ (x_A − x_B) (a contact's normal component is its
 // signed distance, > 0 apart); an orientation's sin θ times the axis of R_Bᵀ R_A's turn
 // (½ vee(R − Rᵀ)).
@@ -106,7 +110,7 @@ template <class T>
 
 template <class Tree, class T, std::size_t Capacity>
 constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motion<Tree, T>& g, const constraint_set<Tree, T, Capacity>& C,
-                         const chains::joint_vector<Tree, T>& qd) noexcept {
+                         const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd) noexcept {
     using P = rows_detail::paths<Tree>;
     const auto world_of = [&](int body, const motor_map<T>& at) { return body < 0 ? at : compose(g.pose[static_cast<std::size_t>(body)], at); };
     const auto moving = [&](int body, const std::array<screw<T>, Tree::size>& X) { return body < 0 ? screw<T>{} : X[static_cast<std::size_t>(body)]; };
@@ -114,6 +118,17 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
     for (auto& column : R.columns) column.fill(T(0));
     R.reach.fill(0);
     for (const constraint_block<T>& c : C.blocks()) {
+        if (on_joint(c.kind)) {
+            const std::size_t u = static_cast<std::size_t>(c.a), k = Tree::v_offset[u], r = R.count;
+            const T sign = c.kind == block_kind::upper_limit ? T(-1) : T(1);
+            for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) R.reach[P::lists.list[n]] |= std::uint64_t(1) << (r / 3);
+            R.columns[k][r] = sign;
+            for (std::size_t j = r; j < r + 3; ++j) R.rate[j] = R.bias[j] = R.gap[j] = T(0);
+            R.rate[r] = sign * qd[k];
+            R.gap[r] = c.kind == block_kind::joint_friction ? T(0) : sign * (q[Tree::q_offset[u]] - c.bound);
+            R.count += 3;
+            continue;
+        }
         const motor_map<T> WA = world_of(c.a, c.at_a), WB = world_of(c.b, c.at_b);
         const vec3<T>& x = WA.t;
         const screw<T> VA = moving(c.a, g.V), VB = moving(c.b, g.V), AA = moving(c.a, g.A), AB = moving(c.b, g.A);

@@ -7,6 +7,11 @@
 //   orientation  A's constraint frame turns with B's (3 rows, bilateral)
 //   contact      A's origin touches B's along B's z axis, the normal n from B to A: a unilateral
 //                row and two of Coulomb friction with coefficient μ (the cone of constraints/)
+//   lower_limit  body A's joint (one dof, k) kept at or above `bound`: one unilateral row on q_k
+//   upper_limit  … at or below `bound` (the row −q_k)
+//   joint_friction  the joint's dry friction: one row on q̇_k whose force is bounded, |τ_k| ≤ `bound`
+// A limit's or friction's block has one row; its other two are empty (zero, with zero force), so
+// that every block is three rows and the solver's bounded block (constraints/) takes it as it is.
 //
 // A weld (a 6-D contact, a flat foot held) is a point and an orientation block. A set holds at
 // most Capacity blocks (no allocation); adding past it is capacity_exceeded, and a block is
@@ -31,14 +36,18 @@
 
 namespace ctga::constrained {
 
-enum class block_kind : unsigned char { point, orientation, contact };
+enum class block_kind : unsigned char { point, orientation, contact, lower_limit, upper_limit, joint_friction };
+
+// A block of one row on a joint's own coordinate (above).
+[[nodiscard]] constexpr bool on_joint(block_kind k) noexcept { return k >= block_kind::lower_limit; }
 
 template <class T = double>
 struct constraint_block {
     block_kind kind = block_kind::point;
     int a = -1, b = -1;  // the two bodies (−1: the world)
     motor_map<T> at_a = chains::tree_detail::identity_map<T>(), at_b = chains::tree_detail::identity_map<T>();
-    T mu = T(0);  // contact: Coulomb's coefficient
+    T mu = T(0);     // contact: Coulomb's coefficient
+    T bound = T(0);  // a limit's bound on q_k; a joint friction's largest force
 };
 
 // How a frame is held: its origin only (3 rows), or its pose (6 rows: a weld).
@@ -53,7 +62,7 @@ class constraint_set {
     [[nodiscard]] constexpr std::size_t size() const noexcept { return count_; }
     [[nodiscard]] constexpr bool bilateral() const noexcept {
         for (std::size_t i = 0; i < count_; ++i)
-            if (blocks_[i].kind == block_kind::contact) return false;
+            if (blocks_[i].kind != block_kind::point && blocks_[i].kind != block_kind::orientation) return false;
         return true;
     }
     constexpr void clear() noexcept { count_ = 0; }
@@ -62,9 +71,11 @@ class constraint_set {
     constexpr error_code add(const constraint_block<T>& c) noexcept {
         if (count_ == Capacity) return error_code::capacity_exceeded;
         if (c.a < -1 || c.b < -1 || c.a >= static_cast<int>(Tree::size) || c.b >= static_cast<int>(Tree::size)) return error_code::bad_index;
+        if (on_joint(c.kind) && (c.a < 0 || c.b != -1 || Tree::nv_of[static_cast<std::size_t>(c.a)] != 1)) return error_code::bad_index;
         if (c.a == c.b) return error_code::joint_to_itself;
-        if (!finite_map(c.at_a) || !finite_map(c.at_b) || !is_finite(c.mu)) return error_code::non_finite;
+        if (!finite_map(c.at_a) || !finite_map(c.at_b) || !is_finite(c.mu) || !is_finite(c.bound)) return error_code::non_finite;
         if (c.kind == block_kind::contact && c.mu < T(0)) return error_code::negative_friction;
+        if (c.kind == block_kind::joint_friction && c.bound < T(0)) return error_code::negative_limit;
         blocks_[count_++] = c;
         return error_code::none;
     }
@@ -97,6 +108,18 @@ class constraint_set {
         if (!(length > T(0))) return error_code::zero_direction;
         return add({block_kind::contact, A::body, -1, chains::frame_detail::placement(m, f), contact_frame(W.t, linear3::scale(T(1) / length, n)), mu});
     }
+
+    // Body i's joint (one dof) kept within [lower, upper]: a block per finite bound (none for ±∞).
+    // Refused: a joint of other than one dof (bad_index), lower > upper (limits_reversed).
+    constexpr error_code limit(int body, const T& lower, const T& upper) noexcept {
+        if (lower != lower || upper != upper) return error_code::non_finite;
+        if (lower > upper) return error_code::limits_reversed;
+        if (is_finite(lower))
+            if (const error_code e = add({block_kind::lower_limit, body, -1, {}, {}, T(0), lower}); e != error_code::none) return e;
+        return is_finite(upper) ? add({block_kind::upper_limit, body, -1, {}, {}, T(0), upper}) : error_code::none;
+    }
+    // Body i's joint's dry friction, |τ| ≤ f while it sticks (URDF <dynamics friction>).
+    constexpr error_code joint_friction(int body, const T& f) noexcept { return add({block_kind::joint_friction, body, -1, {}, {}, T(0), f}); }
 
     // The world frame of a contact at x with unit normal n: z = n, x and y any tangents.
     [[nodiscard]] static constexpr motor_map<T> contact_frame(const vec3<T>& x, const vec3<T>& n) noexcept {

@@ -79,7 +79,7 @@ template <class Tree, class T, std::size_t Capacity>
     const chains::joint_vector<Tree, T> rest{};
     fill_tree_motion(g, m, q, rest);
     constraint_rows<Tree, T, Capacity> R;
-    fill_rows(R, g, C, rest);
+    fill_rows(R, g, C, q, rest);
     delassus_parts<Tree, T, Capacity> parts;
     fill_delassus(parts, f, R);
     out.rows = R.count;

@@ -1,0 +1,153 @@
+// A time step of a robot that touches, as MuJoCo's step: collision, the rows, one solve for every
+// contact, limit and loop, integration (semi-implicit Euler on the configuration space).
+//
+//   constrained::contact_stepper<robot::tree, double, 24> stepper;
+//   stepper.limits = *robot::make_limits<double>();       // URDF <limit>, <dynamics>
+//   auto report = stepper.step(m, q, qd, tau, geometry, world, settings);   // q, q̇ advanced by h
+//
+// One step from (q, q̇):
+//   1. the poses of the bodies (world_poses), each robot shape's pose, and the contact manifolds
+//      (collision/narrowphase.hpp) of every robot shape with every static shape and of the pairs
+//      of robot shapes robot_geometry lets collide, within the speculative margin; each manifold
+//      point a contact block (body A the shape's, B the world or the other body, its constraint
+//      frame at B's witness with z the normal from B to A, μ the settings');
+//   2. each joint of one dof within `limit_margin` of a finite bound a limit block, each joint with
+//      friction a friction block; the stepper's permanent blocks (loops, welds) first;
+//   3. impulse_dynamics.hpp over h (implicit joint damping), the solver warm-started from the last
+//      step's impulses of the same blocks (a contact's id: its two shapes and manifold point);
+//   4. q ← q ⊕ h q̇⁺ (configuration_space.hpp).
+// The report gives the solver's residual and sweeps, the counts and the deepest overlap; a step
+// whose blocks pass the capacity, or whose inputs or solve fail, leaves (q, q̇) as they were and
+// says why. The impulses over h are the forces (forces(): in each block's constraint axes).
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <span>
+
+#include "ctga/chains/configuration_space.hpp"
+#include "ctga/chains/joint_limits.hpp"
+#include "ctga/chains/world_geometry.hpp"
+#include "ctga/collision/shape_set.hpp"
+#include "ctga/constrained/constraint_set.hpp"
+#include "ctga/constrained/impulse_dynamics.hpp"
+#include "ctga/constrained/robot_geometry.hpp"
+#include "ctga/support/checked.hpp"
+
+namespace ctga::constrained {
+
+template <class T>
+struct step_settings {
+    T step = T(1e-3);            // h (s)
+    T mu = T(1);                 // Coulomb's coefficient of every contact
+    T margin = T(5e-3);          // contacts found this far apart (m)
+    T limit_margin = T(2e-2);    // a limit is a row within this of its bound (rad or m)
+    impulse_settings<T> solve{{{T(1e-9), 200}}, T(0.2)};  // tolerance on the impulses (N s), sweeps; the recovery β
+};
+
+template <class T>
+struct step_report {
+    error_code error = error_code::none;
+    constraints::contact_report<T> solver{};
+    std::size_t contacts = 0, limits = 0;
+    T penetration = T(0);  // the deepest overlap of a contact (m, ≥ 0)
+};
+
+template <class Tree, class T, std::size_t Capacity>
+class contact_stepper {
+   public:
+    constraint_set<Tree, T, Capacity> permanent;                           // loops, welds: every step
+    chains::joint_limits<Tree, T> limits = chains::unlimited<Tree, T>();  // bounds, damping, friction
+
+    template <class Shape, std::size_t N, class WorldShape>
+    constexpr step_report<T> step(const chains::model<Tree, T>& m, chains::configuration<Tree, T>& q, chains::joint_vector<Tree, T>& qd,
+                                  const chains::joint_vector<Tree, T>& tau, const robot_geometry<Tree, Shape, T, N>& geometry,
+                                  std::span<const static_shape<WorldShape, T>> world, const step_settings<T>& settings) noexcept {
+        step_report<T> report;
+        blocks_.clear();
+        count_ = 0;
+        for (const constraint_block<T>& c : permanent.blocks()) keep(c, key(0, count_), report);
+        // 1. contacts
+        chains::algorithm_detail::world_poses<Tree, T> g(uninitialized);
+        chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q);
+        const auto shapes = geometry.shapes();
+        const auto pose_of = [&](const auto& s) { return compose(g.pose[static_cast<std::size_t>(s.body)], s.at); };
+        const auto add_manifold = [&](const collision::manifold<T>& mf, int a, int b, std::uint64_t pair) {
+            const vec3<T> n = linear3::scale(T(-1), mf.normal);  // from B to A
+            for (std::size_t p = 0; p < mf.count; ++p) {
+                const collision::contact_point<T>& c = mf.points[p];
+                motor_map<T> at_a = chains::tree_detail::identity_map<T>();
+                at_a.t = point_in(g.pose[static_cast<std::size_t>(a)], c.point_a);
+                motor_map<T> at_b = constraint_set<Tree, T, Capacity>::contact_frame(c.point_b, n);
+                if (b >= 0) at_b = compose(inverse(g.pose[static_cast<std::size_t>(b)]), at_b);
+                keep({block_kind::contact, a, b, at_a, at_b, settings.mu}, key(1, (pair << 32) | c.id), report);
+                ++report.contacts;
+                report.penetration = -c.separation > report.penetration ? -c.separation : report.penetration;
+            }
+        };
+        for (std::size_t i = 0; i < shapes.size(); ++i) {
+            const motor_map<T> pi = pose_of(shapes[i]);
+            for (std::size_t w = 0; w < world.size(); ++w)
+                add_manifold(collision::contact_of(shapes[i].shape, pi, world[w].shape, world[w].pose, settings.margin), shapes[i].body, -1,
+                             (i << 16) | w);
+            for (std::size_t j = i + 1; j < shapes.size(); ++j)
+                if (geometry.collides(shapes[i].body, shapes[j].body))
+                    add_manifold(collision::contact_of(shapes[i].shape, pi, shapes[j].shape, pose_of(shapes[j]), settings.margin), shapes[i].body,
+                                 shapes[j].body, (i << 16) | (j + 0x8000));
+        }
+        // 2. limits and joint friction
+        for (std::size_t b = 0; b < Tree::size; ++b) {
+            if (Tree::nv_of[b] != 1) continue;
+            const std::size_t k = Tree::v_offset[b];
+            const T x = q[Tree::q_offset[b]];
+            const int body = static_cast<int>(b);
+            if (x - limits.lower[k] < settings.limit_margin) keep({block_kind::lower_limit, body, -1, {}, {}, T(0), limits.lower[k]}, key(2, 2 * b), report);
+            if (limits.upper[k] - x < settings.limit_margin) keep({block_kind::upper_limit, body, -1, {}, {}, T(0), limits.upper[k]}, key(2, 2 * b + 1), report);
+            if (limits.friction[k] > T(0)) keep({block_kind::joint_friction, body, -1, {}, {}, T(0), limits.friction[k]}, key(3, b), report);
+        }
+        if (report.error != error_code::none) return report;
+        // 3. the solve, warm-started by key
+        for (std::size_t i = 0; i < count_; ++i) {
+            vec3<T> r{};
+            for (std::size_t j = 0; j < last_count_; ++j)
+                if (last_keys_[j] == keys_[i]) r = {last_[3 * j], last_[3 * j + 1], last_[3 * j + 2]};
+            for (std::size_t a = 0; a < 3; ++a) result_.impulse[3 * i + a] = r[a];
+        }
+        impulse_dynamics(m, q, qd, tau, blocks_, settings.step, limits.damping, settings.solve, result_);
+        report.solver = result_.report;
+        if (result_.error != error_code::none) return report.error = result_.error, report;
+        last_count_ = count_;
+        last_keys_ = keys_;
+        last_ = result_.impulse;
+        // 4. q ← q ⊕ h q̇⁺
+        chains::joint_vector<Tree, T> dq;
+        for (std::size_t k = 0; k < Tree::nv; ++k) dq[k] = settings.step * result_.qd[k];
+        q = chains::integrate(m, q, dq);
+        qd = result_.qd;
+        return report;
+    }
+
+    // The last step's blocks and their impulses (N s; over h: the mean forces).
+    [[nodiscard]] constexpr std::span<const constraint_block<T>> blocks() const noexcept { return blocks_.blocks(); }
+    [[nodiscard]] constexpr std::span<const T> impulses() const noexcept { return {result_.impulse.data(), 3 * blocks_.size()}; }
+
+   private:
+    static constexpr std::uint64_t key(std::uint64_t kind, std::uint64_t id) noexcept { return (kind << 60) | id; }
+    // x in the frame of G: Rᵀ (x − t)
+    static constexpr vec3<T> point_in(const motor_map<T>& G, const vec3<T>& x) noexcept { return linear3::apply_transposed(G.R, linear3::sub(x, G.t)); }
+    constexpr void keep(const constraint_block<T>& c, std::uint64_t k, step_report<T>& report) noexcept {
+        if (report.error != error_code::none) return;
+        if (const error_code e = blocks_.add(c); e != error_code::none) return void(report.error = e);
+        keys_[count_++] = k;
+        report.limits += on_joint(c.kind) && c.kind != block_kind::joint_friction;
+    }
+
+    constraint_set<Tree, T, Capacity> blocks_;
+    std::array<std::uint64_t, Capacity> keys_{}, last_keys_{};
+    std::size_t count_ = 0, last_count_ = 0;
+    std::array<T, 3 * Capacity> last_{};
+    impulse_result<Tree, T, Capacity> result_{};
+};
+
+}  // namespace ctga::constrained

@@ -1,0 +1,223 @@
+// Robots that touch (include/ctga/constrained/impulse_dynamics.hpp, contact_step.hpp), against
+// references that do not share their route:
+//
+//   - the impact of a double pendulum's tip on the ground (frictionless, Coulomb, sticking)
+//     against the closed form of tests/support/double_pendulum_impact.hpp (the 2 × 2 mass matrix
+//     from the kinetic energy, the tip's Jacobian by hand, Moreau's law case by case);
+//   - a quadruped (tests/data/quadruped.urdf through the converter) with a sphere on each foot,
+//     dropped onto the ground under a PD controller: at rest the feet's normal forces sum to its
+//     weight (center_of_mass's mass times g), no foot slips (< 1 µm/s) and none sinks;
+//   - a link resting on its joint limit under gravity: the limit's force is the gravity torque
+//     m g c cos q (statics), the overlap gone;
+//   - refused input: a limit with lower > upper, a stepper past its capacity.
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <random>
+
+#include <ctga/chains/algorithms.hpp>
+#include <ctga/constrained/contact_step.hpp>
+#include <ctga/constrained/impulse_dynamics.hpp>
+
+#include "quadruped.hpp"  // generated: tools/urdf_to_ctga.py tests/data/quadruped.urdf --name quadruped --floating-base
+#include "support/catch.hpp"
+#include "support/double_pendulum_impact.hpp"
+
+namespace {
+
+namespace ch = ctga::chains;
+namespace cn = ctga::constrained;
+namespace co = ctga::collision;
+void worst(double& w, double x) { w = x > w ? x : w; }
+
+ctga::motor<double> shifted(double x, double y, double z) { return ctga::rigid_motion(ctga::make_translator(x, y, z), ctga::make_rotor(0.0, 0.0, 0.0, 1.0)); }
+
+// A link hanging along −y from its hinge about z: mass m, centre of mass at c, inertia I about z
+// there (a thin rod: the same about x, little about y).
+ctga::checked<ctga::mass_properties<double>> rod(double m, double c, double I) {
+    return ctga::make_mass_properties(m, ctga::vec3<double>{0, -c, 0}, ctga::mat3<double>{{{I, 0, 0}, {0, 1e-3 * I, 0}, {0, 0, I}}});
+}
+
+using pendulum = ch::tree<ch::link<-1, ch::revolute_z>, ch::link<0, ch::revolute_z>, ch::fixed_frame<"tip", 1>>;
+
+}  // namespace
+
+TEST_CASE("The impact of a double pendulum's tip on the ground is Moreau's law's closed form", "[constrained][impact]") {
+    std::mt19937_64 rng(45);
+    std::uniform_real_distribution<double> U(0.0, 1.0);
+    std::array<double, 3> errors{};  // impulse, q̇⁺, frictionless case's tangential impulse
+    std::size_t sticking = 0, sliding = 0;
+    for (int trial = 0; trial < 24; ++trial) {
+        const ctga::test::double_pendulum p{0.5 + U(rng), 0.5 + U(rng), 0.2 + 0.3 * U(rng), 0.01 + 0.05 * U(rng),
+                                            0.4 + U(rng), 0.3 + U(rng), 0.2 + 0.2 * U(rng), 0.01 + 0.04 * U(rng)};
+        ch::model<pendulum> m;
+        m.link<0>() = *ch::make_link<ch::revolute_z>(shifted(0, 0, 0), rod(p.m1, p.c1, p.I1));
+        m.link<1>() = *ch::make_link<ch::revolute_z>(shifted(0, -p.l1, 0), rod(p.m2, p.c2, p.I2));
+        m.frames[0] = *ch::make_frame(shifted(0, -p.l2, 0));
+        const double th1 = 2.0 * U(rng) - 1.0, th2 = (0.3 + 1.5 * U(rng)) * (U(rng) < 0.5 ? -1 : 1);
+        std::array<double, 2> thd{4.0 * U(rng) - 2.0, 4.0 * U(rng) - 2.0};
+        const auto J = ctga::test::tip_jacobian(p, th1, th2);
+        if (J[0][0] * thd[0] + J[0][1] * thd[1] > -0.05) {  // make the tip approach the ground
+            thd[0] = -thd[0], thd[1] = -thd[1];
+            if (J[0][0] * thd[0] + J[0][1] * thd[1] > -0.05) continue;
+        }
+        const double mu = std::array<double, 3>{0.0, 0.3, 10.0}[trial % 3];
+        const ch::configuration<pendulum> q{th1, th2};
+        const ch::joint_vector<pendulum> qd{thd[0], thd[1]};
+        cn::constraint_set<pendulum, double, 1> C;
+        REQUIRE(C.touch(m, q, ch::frame<"tip">, ctga::vec3<double>{0, 1, 0}, mu) == ctga::error_code::none);
+        cn::impulse_settings<double> s;
+        s.rows.solver.tolerance = 1e-13;
+        const auto got = cn::impact(m, q, qd, C, s);
+        REQUIRE(got.error == ctga::error_code::none);
+        REQUIRE(got.report.converged);
+        const auto want = ctga::test::impact(p, th1, th2, thd, mu);
+        (want.sticks ? sticking : sliding) += 1;
+        // the contact frame at a +y normal has t1 = +x (constraint_set::contact_frame), t2 = −z: the
+        // planar pendulum's tip cannot move along t2, whose row is zero and whose impulse is any that
+        // keeps the cone (W is singular there: the solver's answer is one of many, checked by the cone)
+        const double scale = std::abs(want.impulse[0]) + 1.0;
+        worst(errors[0], std::abs(got.impulse[0] - want.impulse[0]) / scale);
+        worst(errors[0], std::abs(got.impulse[1] - want.impulse[1]) / scale);
+        CHECK(std::hypot(got.impulse[1], got.impulse[2]) <= mu * got.impulse[0] * (1 + 1e-12));
+        worst(errors[1], std::abs(got.qd[0] - want.velocity_after[0]) + std::abs(got.qd[1] - want.velocity_after[1]));
+        if (mu == 0.0) worst(errors[2], std::abs(got.impulse[1]));
+    }
+    std::printf("double pendulum impact: %zu sticking, %zu sliding; impulse %.1e, qd+ %.1e\n", sticking, sliding, errors[0], errors[1]);
+    CHECK(sticking >= 4);
+    CHECK(sliding >= 8);
+    CHECK(errors[0] < 1e-11);
+    CHECK(errors[1] < 1e-10);
+    CHECK(errors[2] == 0.0);
+}
+
+namespace {
+using quad = quadruped::tree;
+using shape_kinds = co::shape<co::sphere<double>>;
+using ground_kinds = co::shape<co::half_space<double>>;
+
+// The quadruped's actuated joints at (hip, thigh, knee) = (0, 0.45, −0.9) on every leg: each foot
+// under its hip, 0.36 m below.
+ch::configuration<quad> standing(double height) {
+    ch::configuration<quad> q{};
+    q[0] = 1.0;  // the base's motor: a translation by (0, 0, height)
+    const ctga::motor<double> g = shifted(0, 0, height);
+    for (std::size_t k = 0; k < 8; ++k) q[k] = g[k];
+    for (std::size_t leg = 0; leg < 4; ++leg) q[8 + 3 * leg + 1] = 0.45, q[8 + 3 * leg + 2] = -0.9;
+    return q;
+}
+}  // namespace
+
+TEST_CASE("A quadruped stands on four feet: the forces carry its weight, no foot slips", "[constrained][contact_step]") {
+    const auto m = *quadruped::make_model<double>();
+    static_assert(quad::nv == 18);
+    cn::robot_geometry<quad, shape_kinds, double, 4> feet;
+    const double radius = 0.02;
+    REQUIRE(feet.attach(m, ch::frame<"FL_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
+    REQUIRE(feet.attach(m, ch::frame<"FR_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
+    REQUIRE(feet.attach(m, ch::frame<"RL_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
+    REQUIRE(feet.attach(m, ch::frame<"RR_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
+    const std::array<cn::static_shape<ground_kinds>, 1> ground{};
+    cn::contact_stepper<quad, double, 16> stepper;
+    stepper.limits = *quadruped::make_limits<double>();
+    for (std::size_t j = 0; j < 12; ++j) stepper.limits.damping[6 + j] = 10.0;  // the PD's D, taken implicitly by the step
+    cn::step_settings<double> s;
+    s.mu = 0.8;
+    const ch::configuration<quad> target = standing(0.0);
+    ch::configuration<quad> q = standing(0.36 + radius + 0.01);  // dropped from 1 cm
+    ch::joint_vector<quad> qd{};
+    const double h = s.step;
+    const auto weight = ch::center_of_mass(m, ch::forward_kinematics(m, q)).mass * 9.81;
+    double deepest = 0, force_error = 0, slip = 0, residual = 0;
+    for (int n = 0; n < 3000; ++n) {
+        ch::joint_vector<quad> tau{};
+        for (std::size_t j = 0; j < 12; ++j) tau[6 + j] = 200.0 * (target[8 + j] - q[8 + j]);
+        const auto report = stepper.step(m, q, qd, tau, feet, std::span<const cn::static_shape<ground_kinds>>(ground), s);
+        REQUIRE(report.error == ctga::error_code::none);
+        REQUIRE(report.solver.converged);
+        worst(residual, report.solver.residual);
+        if (n < 2000) continue;  // settled after 2 s; then over the last second:
+        worst(deepest, report.penetration);
+        CHECK(report.contacts == 4);
+        double sum = 0;
+        for (std::size_t i = 0; i < stepper.blocks().size(); ++i)
+            if (stepper.blocks()[i].kind == cn::block_kind::contact) sum += stepper.impulses()[3 * i] / h;
+        worst(force_error, std::abs(sum - weight) / weight);
+        const auto k = ch::forward_kinematics(m, q, qd);
+        for (const auto& v : {ch::frame_velocity(m, k, ch::frame<"FL_foot">, ch::reference::local_world_aligned),
+                              ch::frame_velocity(m, k, ch::frame<"FR_foot">, ch::reference::local_world_aligned),
+                              ch::frame_velocity(m, k, ch::frame<"RL_foot">, ch::reference::local_world_aligned),
+                              ch::frame_velocity(m, k, ch::frame<"RR_foot">, ch::reference::local_world_aligned)})
+            worst(slip, std::hypot(v[3] - v[1] * radius, v[4] + v[0] * radius));  // at the contact point: v + ω × (0, 0, −r)
+    }
+    std::printf("quadruped standing: forces vs weight %.1e, slip %.1e m/s, overlap %.1e m, solver residual %.1e\n", force_error, slip, deepest,
+                residual);
+    CHECK(force_error < 1e-6);
+    CHECK(slip < 1e-6);
+    CHECK(deepest < 1e-6);
+}
+
+namespace {
+// A hinge about y holding a rod along +x (mass m, centre at c): gravity −z turns it down (q < 0
+// lowers it? q about y turns +x towards −z for q > 0).
+using arm = ch::tree<ch::link<-1, ch::revolute_y>>;
+}  // namespace
+
+TEST_CASE("A joint limit holds a link under gravity", "[constrained][contact_step]") {
+    const double mass = 2.0, c = 0.4, upper = 0.3;
+    ch::model<arm> m;
+    m.link<0>() = *ch::make_link<ch::revolute_y>(shifted(0, 0, 0), ctga::make_mass_properties(mass, ctga::vec3<double>{c, 0, 0},
+                                                                                                  ctga::mat3<double>{{{1e-4, 0, 0}, {0, 0.02, 0}, {0, 0, 0.02}}}));
+    cn::robot_geometry<arm, co::shape<co::sphere<double>>, double, 1> none;
+    const std::array<cn::static_shape<co::shape<co::half_space<double>>>, 0> nothing{};
+    cn::contact_stepper<arm, double, 2> stepper;
+    stepper.limits.lower[0] = -1.0;
+    stepper.limits.upper[0] = upper;
+    stepper.limits.damping[0] = 0.05;
+    cn::step_settings<double> s;
+    ch::configuration<arm> q{0.0};
+    ch::joint_vector<arm> qd{0.0};
+    // gravity turns +x towards −z: about +y that is q increasing (R_y(q) x = (cos q, 0, −sin q))
+    for (int n = 0; n < 2000; ++n) {
+        const auto report = stepper.step(m, q, qd, ch::joint_vector<arm>{}, none, std::span<const cn::static_shape<co::shape<co::half_space<double>>>>(nothing), s);
+        REQUIRE(report.error == ctga::error_code::none);
+    }
+    REQUIRE(stepper.blocks().size() == 1);
+    REQUIRE(stepper.blocks()[0].kind == cn::block_kind::upper_limit);
+    const double torque = stepper.impulses()[0] / s.step, statics = mass * 9.81 * c * std::cos(upper);
+    std::printf("joint limit under load: overlap %.1e rad, force %.12f vs m g c cos q %.12f\n", q[0] - upper, torque, statics);
+    CHECK(std::abs(q[0] - upper) < 1e-9);
+    CHECK(std::abs(qd[0]) < 1e-9);
+    CHECK(std::abs(torque - statics) < 1e-9 * statics);
+}
+
+TEST_CASE("Limits and steps refuse bad input", "[constrained][contact_step]") {
+    cn::constraint_set<arm, double, 2> C;
+    CHECK(C.limit(0, 1.0, -1.0) == ctga::error_code::limits_reversed);
+    CHECK(C.limit(0, std::nan(""), 1.0) == ctga::error_code::non_finite);
+    CHECK(C.limit(-1, -1.0, 1.0) == ctga::error_code::bad_index);
+    CHECK(C.joint_friction(0, -0.1) == ctga::error_code::negative_limit);
+    CHECK(C.limit(0, -1.0, 1.0) == ctga::error_code::none);
+    CHECK(C.size() == 2);
+    CHECK(C.limit(0, -1.0, 1.0) == ctga::error_code::capacity_exceeded);
+    // a stepper of one block, with two limits within reach: refused, the state left as it was
+    ch::model<arm> m;
+    m.link<0>() = *ch::make_link<ch::revolute_y>(shifted(0, 0, 0), ctga::make_mass_properties(1.0, ctga::vec3<double>{0.1, 0, 0},
+                                                                                                  ctga::mat3<double>{{{1e-3, 0, 0}, {0, 1e-2, 0}, {0, 0, 1e-2}}}));
+    cn::contact_stepper<arm, double, 1> stepper;
+    stepper.limits.lower[0] = -0.01;
+    stepper.limits.upper[0] = 0.01;
+    cn::robot_geometry<arm, co::shape<co::sphere<double>>, double, 1> none;
+    const std::array<cn::static_shape<co::shape<co::half_space<double>>>, 0> nothing{};
+    ch::configuration<arm> q{0.0};
+    ch::joint_vector<arm> qd{0.5};
+    const auto report = stepper.step(m, q, qd, ch::joint_vector<arm>{}, none, std::span<const cn::static_shape<co::shape<co::half_space<double>>>>(nothing), {});
+    CHECK(report.error == ctga::error_code::capacity_exceeded);
+    CHECK(q[0] == 0.0);
+    CHECK(qd[0] == 0.5);
+    qd[0] = std::nan("");
+    cn::contact_stepper<arm, double, 2> roomy;
+    CHECK(roomy.step(m, q, qd, ch::joint_vector<arm>{}, none, std::span<const cn::static_shape<co::shape<co::half_space<double>>>>(nothing), {}).error ==
+          ctga::error_code::non_finite);
+}

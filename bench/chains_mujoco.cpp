@@ -115,9 +115,10 @@ void principal_axes(const std::array<std::array<double, 3>, 3>& Ic, double diag[
     mju_mat2Quat(quat, R);
 }
 
-void write_body(std::ostringstream& x, const mujoco_case& c, const std::vector<std::vector<std::size_t>>& children, std::size_t i,
-                int depth) {
-    const mujoco_body& b = c.bodies[i];
+// A body and its subtree; with a scenario (contact_step rows), its joints' damping and its feet.
+void write_body(std::ostringstream& x, const std::vector<mujoco_body>& bodies, const std::vector<std::vector<std::size_t>>& children,
+                std::size_t i, int depth, const standing_scenario* s) {
+    const mujoco_body& b = bodies[i];
     const std::string pad(static_cast<std::size_t>(2 * depth), ' ');
     double diag[3], quat[4];
     principal_axes(b.Ic, diag, quat);
@@ -125,38 +126,56 @@ void write_body(std::ostringstream& x, const mujoco_case& c, const std::vector<s
     x << pad << "  <inertial pos=\"" << b.com[0] << ' ' << b.com[1] << ' ' << b.com[2] << "\" mass=\"" << b.mass << "\" quat=\""
       << quat[0] << ' ' << quat[1] << ' ' << quat[2] << ' ' << quat[3] << "\" diaginertia=\"" << diag[0] << ' ' << diag[1] << ' '
       << diag[2] << "\"/>\n";
-    const char* passive = "damping=\"0\" armature=\"0\" stiffness=\"0\" frictionloss=\"0\"";
+    const std::string passive = cat("damping=\"", s && b.joint == mujoco_joint::hinge ? s->damping : 0.0, "\" armature=\"0\" stiffness=\"0\" frictionloss=\"0\"");
     if (b.joint == mujoco_joint::free) {
         x << pad << "  <joint name=\"j" << i << "\" type=\"free\" " << passive << "/>\n";
     } else if (b.joint == mujoco_joint::hinge || b.joint == mujoco_joint::slide) {
         x << pad << "  <joint name=\"j" << i << "\" type=\"" << (b.joint == mujoco_joint::hinge ? "hinge" : "slide") << "\" axis=\""
           << b.axis[0] << ' ' << b.axis[1] << ' ' << b.axis[2] << "\" pos=\"0 0 0\" ref=\"0\" limited=\"false\" " << passive << "/>\n";
     }
-    for (std::size_t k : children[i]) write_body(x, c, children, k, depth + 1);
+    if (s)
+        for (std::size_t f = 0; f < s->feet.size(); ++f)
+            if (s->feet[f].body == i)
+                x << pad << "  <geom name=\"foot" << f << "\" type=\"sphere\" size=\"" << s->feet[f].radius << "\" pos=\"" << s->feet[f].at[0]
+                  << ' ' << s->feet[f].at[1] << ' ' << s->feet[f].at[2] << "\" friction=\"" << s->mu << " 0.005 0.0001\"/>\n";
+    for (std::size_t k : children[i]) write_body(x, bodies, children, k, depth + 1, s);
     x << pad << "</body>\n";
 }
 
-std::string mjcf(const mujoco_case& c) {
-    std::vector<std::vector<std::size_t>> children(c.bodies.size());
+// The model of a case (no contact, no passive forces: the chains rows), or of a standing scenario
+// (MuJoCo's defaults but for the step and the Euler integrator: its joint damping implicit).
+std::string mjcf(const std::string& label, const std::vector<mujoco_body>& bodies, const std::array<double, 3>& gravity,
+                 const standing_scenario* s = nullptr) {
+    std::vector<std::vector<std::size_t>> children(bodies.size());
     std::vector<std::size_t> roots;
-    for (std::size_t i = 0; i < c.bodies.size(); ++i)
-        (c.bodies[i].parent < 0 ? roots : children[static_cast<std::size_t>(c.bodies[i].parent)]).push_back(i);
+    for (std::size_t i = 0; i < bodies.size(); ++i) (bodies[i].parent < 0 ? roots : children[static_cast<std::size_t>(bodies[i].parent)]).push_back(i);
     std::ostringstream x;
     x.precision(17);
-    x << "<mujoco model=\"ctga_" << c.label << "\">\n"
+    x << "<mujoco model=\"ctga_" << label << "\">\n"
       << "  <compiler angle=\"radian\" inertiafromgeom=\"false\" boundmass=\"0\" boundinertia=\"0\" balanceinertia=\"false\""
          " fusestatic=\"false\" settotalmass=\"-1\"/>\n"
-      << "  <option gravity=\"" << c.gravity[0] << ' ' << c.gravity[1] << ' ' << c.gravity[2]
-      << "\" timestep=\"0.001\" integrator=\"Euler\" wind=\"0 0 0\" density=\"0\" viscosity=\"0\">\n"
-      << "    <flag constraint=\"disable\" equality=\"disable\" frictionloss=\"disable\" limit=\"disable\" contact=\"disable\""
-         " passive=\"disable\" actuation=\"disable\" sensor=\"disable\" gravity=\"enable\"/>\n"
-      << "  </option>\n"
+      << "  <option gravity=\"" << gravity[0] << ' ' << gravity[1] << ' ' << gravity[2] << "\" timestep=\"" << (s ? s->h : 0.001)
+      << "\" integrator=\"Euler\" wind=\"0 0 0\" density=\"0\" viscosity=\"0\">\n";
+    if (!s)
+        x << "    <flag constraint=\"disable\" equality=\"disable\" frictionloss=\"disable\" limit=\"disable\" contact=\"disable\""
+             " passive=\"disable\" actuation=\"disable\" sensor=\"disable\" gravity=\"enable\"/>\n";
+    x << "  </option>\n"
       << "  <worldbody>\n";
-    for (std::size_t r : roots) write_body(x, c, children, r, 2);
+    if (s) x << "    <geom name=\"ground\" type=\"plane\" size=\"0 0 1\" friction=\"" << s->mu << " 0.005 0.0001\"/>\n";
+    for (std::size_t r : roots) write_body(x, bodies, children, r, 2, s);
     x << "  </worldbody>\n</mujoco>\n";
     return x.str();
 }
 
+// The MJCF to a file in $CTGA_BENCH_MUJOCO_XML, for a reader.
+void keep_xml(const std::string& label, const std::string& xml) {
+    if (const char* dir = std::getenv("CTGA_BENCH_MUJOCO_XML")) {
+        if (std::FILE* out = std::fopen(cat(dir, "/", label, ".xml").c_str(), "w")) {
+            std::fputs(xml.c_str(), out);
+            std::fclose(out);
+        }
+    }
+}
 
 // ---- coordinates ---------------------------------------------------------------------------
 
@@ -311,13 +330,8 @@ void add_mujoco(std::vector<entry>& table, const mujoco_case& c) {
     }
 
     // the model
-    const std::string xml = mjcf(c);
-    if (const char* dir = std::getenv("CTGA_BENCH_MUJOCO_XML")) {  // the MJCF, for a reader
-        if (std::FILE* out = std::fopen(cat(dir, "/", c.label, ".xml").c_str(), "w")) {
-            std::fputs(xml.c_str(), out);
-            std::fclose(out);
-        }
-    }
+    const std::string xml = mjcf(c.label, c.bodies, c.gravity);
+    keep_xml(c.label, xml);
     auto x = std::make_shared<bridge>();
     std::string error;
     x->m = bench::load_mjcf(xml, cat("ctga_", c.label, ".xml"), error);
@@ -417,6 +431,89 @@ void add_mujoco(std::vector<entry>& table, const mujoco_case& c) {
     if (!c.tau_ref.empty()) add(table, cat("rnea_", c.label, "/mujoco"), x, mujoco_chain_kernel_rnea);
     if (!c.H_ref.empty()) add(table, cat("crba_", c.label, "/mujoco"), x, mujoco_chain_kernel_crba);
     if (!c.qdd_ref.empty()) add(table, cat("aba_", c.label, "/mujoco"), x, mujoco_chain_kernel_aba);
+}
+
+// ---- a robot standing (contact_step_<label>/mujoco) -------------------------------------------
+
+namespace {
+struct standing_bridge {
+    mjModel* m = nullptr;
+    mjData* d = nullptr;
+    std::vector<int> qadr, dadr;  // the hinges', in the scenario's order
+    std::vector<double> target;
+    std::vector<int> feet;        // geom ids
+    std::vector<double> radius;
+    double kp = 0;
+    standing_bridge() = default;
+    standing_bridge(const standing_bridge&) = delete;
+    standing_bridge& operator=(const standing_bridge&) = delete;
+    ~standing_bridge() {
+        if (d) mj_deleteData(d);
+        if (m) mj_deleteModel(m);
+    }
+};
+// One step: the PD's torques as applied forces, then mj_step (collision, the constraint solve,
+// Euler with implicit damping).
+[[gnu::noinline]] void mujoco_contact_kernel_step(standing_bridge& x) {
+    for (std::size_t j = 0; j < x.qadr.size(); ++j)
+        x.d->qfrc_applied[x.dadr[j]] = x.kp * (x.target[j] - x.d->qpos[x.qadr[j]]);
+    mj_step(x.m, x.d);
+}
+}  // namespace
+
+void add_mujoco_standing(std::vector<entry>& table, const standing_scenario& s) {
+    const std::string who = cat("ctga_chains_bench: mujoco contact_step_", s.label);
+    const std::string xml = mjcf(s.label, s.bodies, s.gravity, &s);
+    keep_xml(cat("standing_", s.label), xml);
+    auto x = std::make_shared<standing_bridge>();
+    std::string error;
+    x->m = bench::load_mjcf(xml, cat("ctga_standing_", s.label, ".xml"), error);
+    if (!x->m) {
+        std::fprintf(stderr, "%s: mj_loadXML: %s; the row is not registered\n", who.c_str(), error.c_str());
+        return;
+    }
+    x->d = mj_makeData(x->m);
+    x->kp = s.kp;
+    std::size_t hinge = 0;
+    for (std::size_t i = 0; i < s.bodies.size(); ++i) {
+        const int jnt = x->m->body_jntadr[mj_name2id(x->m, mjOBJ_BODY, cat("b", i).c_str())];
+        if (s.bodies[i].joint == mujoco_joint::free) {
+            const int a = x->m->jnt_qposadr[jnt];
+            const double start[7] = {0, 0, s.height, 1, 0, 0, 0};
+            for (int k = 0; k < 7; ++k) x->d->qpos[a + k] = start[k];
+        } else if (s.bodies[i].joint == mujoco_joint::hinge) {
+            x->qadr.push_back(x->m->jnt_qposadr[jnt]);
+            x->dadr.push_back(x->m->jnt_dofadr[jnt]);
+            x->target.push_back(s.target[hinge]);
+            x->d->qpos[x->qadr.back()] = s.target[hinge++];
+        }
+    }
+    for (std::size_t f = 0; f < s.feet.size(); ++f) {
+        x->feet.push_back(mj_name2id(x->m, mjOBJ_GEOM, cat("foot", f).c_str()));
+        x->radius.push_back(s.feet[f].radius);
+    }
+    standing_figures fig;
+    for (std::size_t n = 0; n < s.settle + s.measure; ++n) {
+        mujoco_contact_kernel_step(*x);
+        if (n < s.settle) continue;
+        mj_forward(x->m, x->d);  // (the velocities of the new state's geoms)
+        for (std::size_t f = 0; f < x->feet.size(); ++f) {
+            mjtNum v[6];
+            mj_objectVelocity(x->m, x->d, mjOBJ_GEOM, x->feet[f], v, 0);  // (ω, v) at the centre, world axes
+            const double r = x->radius[f];
+            fig.slip = std::max(fig.slip, std::hypot(v[3] - r * v[1], v[4] + r * v[0]));
+            fig.sinking = std::max(fig.sinking, r - x->d->geom_xpos[3 * x->feet[f] + 2]);
+        }
+    }
+    std::fprintf(stderr, "%s (MuJoCo %s, h %g s, its defaults): after %zu steps, over %zu: slip %.1e m/s, sinking %.1e m\n", who.c_str(),
+                 mj_versionString(), s.h, s.settle, s.measure, fig.slip, fig.sinking);
+    table.push_back({cat("contact_step_", s.label, "/mujoco"),
+                     [x](benchmark::State& st) {
+                         for (auto _ : st) mujoco_contact_kernel_step(*x);
+                     },
+                     [x](std::size_t calls) {
+                         for (std::size_t i = 0; i < calls; ++i) mujoco_contact_kernel_step(*x);
+                     }});
 }
 
 }  // namespace bench::chains

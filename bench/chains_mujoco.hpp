@@ -57,13 +57,41 @@ struct mujoco_case {
     std::vector<std::vector<double>> tau_ref, H_ref, qdd_ref;
 };
 
+// A robot standing on the ground (the plane z = 0) on spheres fixed to its bodies, under a PD
+// controller on its hinges, for contact_step_<label>/<engine> (chains_constrained.cpp): both engines
+// step it from the same start, τ_k = kp (target_k − q_k) on every hinge plus the joints' viscous
+// damping (implicit in both), Coulomb friction mu, step h. Measured after `settle` steps, over
+// `measure` more: a foot's slip (the speed along the ground of its sphere's material point at the
+// bottom) and its sinking (r − the sphere centre's height, when positive), the largest of each.
+struct foot_sphere {
+    std::size_t body;
+    std::array<double, 3> at;  // the centre in the body's frame
+    double radius;
+};
+struct standing_scenario {
+    std::string label;
+    std::vector<mujoco_body> bodies;  // body 0 floating, its joint frame at the origin
+    std::array<double, 3> gravity;
+    double height;                    // the base's start: (0, 0, height), not turned
+    std::vector<double> target;       // per hinge in body order: the start and the PD's target
+    std::vector<foot_sphere> feet;
+    double h, mu, kp, damping;
+    std::size_t settle, measure;
+};
+struct standing_figures {
+    double slip = 0, sinking = 0;
+};
+
 #ifdef CTGA_BENCH_MUJOCO
 inline constexpr bool mujoco_enabled = true;
 // Builds the MuJoCo model of c, checks it and registers its rows (chains_mujoco.cpp).
 void add_mujoco(std::vector<entry>& table, const mujoco_case& c);
+// The scenario in MuJoCo: its figures (stderr) and contact_step_<label>/mujoco.
+void add_mujoco_standing(std::vector<entry>& table, const standing_scenario& s);
 #else
 inline constexpr bool mujoco_enabled = false;
 inline void add_mujoco(std::vector<entry>&, const mujoco_case&) {}
+inline void add_mujoco_standing(std::vector<entry>&, const standing_scenario&) {}
 #endif
 
 }  // namespace bench::chains

@@ -479,8 +479,7 @@ void add_mujoco_standing(std::vector<entry>& table, const standing_scenario& s) 
         const int jnt = x->m->body_jntadr[mj_name2id(x->m, mjOBJ_BODY, cat("b", i).c_str())];
         if (s.bodies[i].joint == mujoco_joint::free) {
             const int a = x->m->jnt_qposadr[jnt];
-            const double start[7] = {0, 0, s.height, 1, 0, 0, 0};
-            for (int k = 0; k < 7; ++k) x->d->qpos[a + k] = start[k];
+            for (std::size_t k = 0; k < 7; ++k) x->d->qpos[a + static_cast<int>(k)] = s.base[k];
         } else if (s.bodies[i].joint == mujoco_joint::hinge) {
             x->qadr.push_back(x->m->jnt_qposadr[jnt]);
             x->dadr.push_back(x->m->jnt_dofadr[jnt]);

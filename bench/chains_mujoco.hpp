@@ -57,7 +57,7 @@ struct mujoco_case {
     std::vector<std::vector<double>> tau_ref, H_ref, qdd_ref;
 };
 
-// A robot standing on the ground (the plane z = 0) on spheres fixed to its bodies, under a PD
+// A robot standing (or lying) on the ground (the plane z = 0) on spheres fixed to its bodies, under a PD
 // controller on its hinges, for contact_step_<label>/<engine> (chains_constrained.cpp): both engines
 // step it from the same start, τ_k = kp (target_k − q_k) on every hinge plus the joints' viscous
 // damping (implicit in both), Coulomb friction mu, step h. Measured after `settle` steps, over
@@ -72,7 +72,7 @@ struct standing_scenario {
     std::string label;
     std::vector<mujoco_body> bodies;  // body 0 floating, its joint frame at the origin
     std::array<double, 3> gravity;
-    double height;                    // the base's start: (0, 0, height), not turned
+    std::array<double, 7> base;       // the base's start: position, unit quaternion (w, x, y, z)
     std::vector<double> target;       // per hinge in body order: the start and the PD's target
     std::vector<foot_sphere> feet;
     double h, mu, kp, damping;

@@ -33,6 +33,7 @@
 #include "ctga/constrained/constraint_set.hpp"
 #include "ctga/constrained/delassus.hpp"
 #include "ctga/constraints/contact_problem.hpp"
+#include "ctga/constraints/newton_polish.hpp"
 #include "ctga/support/checked.hpp"
 #include "ctga/support/math.hpp"
 
@@ -139,15 +140,24 @@ constexpr void rows_of(const chains::algorithm_detail::tree_factor<Tree, T>& f, 
     }
 }
 
+// Scratch for solve_rows' Newton finish on a set of up to Capacity blocks: W and q compact, then
+// newton_polish.hpp's own.
+[[nodiscard]] constexpr std::size_t polish_scratch_size(std::size_t capacity) noexcept {
+    return 9 * capacity * capacity + 3 * capacity + constraints::newton_scratch_size(capacity);
+}
+
 // λ with W λ + q in the blocks' sets (bilateral sets directly, above; else by solve_contacts from
 // the warm start in λ), then z ← L⁻¹ D⁻¹ (z + Yᵀ λ): H⁻¹ (b + Jᵀ λ) for z = L⁻ᵀ b. `scale` as in
-// blocks_delassus. Returns the rows kept (bilateral) or all rows.
+// blocks_delassus. With scratch of polish_scratch_size(Capacity) numbers the sweeps are
+// accelerated (contact_problem.hpp's conjugate directions) and a solve they leave above the
+// tolerance is finished by Newton (newton_polish.hpp: a few steps where Gauss–Seidel needs
+// hundreds, as on a body lying on many contacts). Returns the rows kept (bilateral) or all rows.
 template <class Tree, class T, std::size_t Capacity>
 constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tree, T>& f, std::array<T, Tree::nv>& z,
                                  const constraint_rows<Tree, T, Capacity>& R, const delassus_parts<Tree, T, Capacity>& P,
                                  const std::array<T, 3 * Capacity>& qv, const constraint_set<Tree, T, Capacity>& C,
                                  const constrained_settings<T>& settings, const T& scale, std::array<T, 3 * Capacity>& force,
-                                 constraints::contact_report<T>& report) noexcept {
+                                 constraints::contact_report<T>& report, std::span<T> scratch = {}) noexcept {
     std::size_t rank = R.count;
     if (C.bilateral()) {
         rank = semidefinite_solve(P.W, R.count, qv, settings.redundancy, force);
@@ -161,12 +171,36 @@ constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tre
         report.converged = report.residual <= settings.solver.tolerance;
         if (!is_finite(report.residual)) report.error = error_code::non_finite;
     } else {
+        const std::size_t m = C.size(), n = R.count;
         T largest = T(0);
-        for (std::size_t r = 0; r < R.count; ++r) largest = P.W[r][r] > largest ? P.W[r][r] : largest;
-        blocks_delassus<T, 3 * Capacity> D{P.W, std::span<const T>(qv.data(), R.count), C.blocks(), settings.redundancy * largest, scale};
+        for (std::size_t r = 0; r < n; ++r) largest = P.W[r][r] > largest ? P.W[r][r] : largest;
+        blocks_delassus<T, 3 * Capacity> D{P.W, std::span<const T>(qv.data(), n), C.blocks(), settings.redundancy * largest, scale};
         std::array<T, Capacity> mu{};
-        for (std::size_t i = 0; i < C.size(); ++i) mu[i] = C.blocks()[i].mu;
-        report = constraints::solve_contacts<T>(D, std::span<const T>(mu.data(), C.size()), std::span<T>(force.data(), R.count), settings.solver);
+        for (std::size_t i = 0; i < m; ++i) mu[i] = C.blocks()[i].mu;
+        const bool polish = scratch.size() >= polish_scratch_size(Capacity);
+        report = constraints::solve_contacts<T>(D, std::span<const T>(mu.data(), m), std::span<T>(force.data(), n), settings.solver,
+                                                polish ? scratch : std::span<T>{});
+        if (polish && report.error == error_code::none && !report.converged) {
+            const std::span<T> W = scratch.subspan(0, n * n), q = scratch.subspan(n * n, n), rest = scratch.subspan(n * n + n);
+            std::array<unsigned char, Capacity> kind{};
+            std::array<std::array<vec3<T>, 2>, Capacity> bounds{};
+            for (std::size_t i = 0; i < m; ++i) {
+                kind[i] = D.bounded(i) ? constraints::bounded_block : D.bilateral(i) ? constraints::bilateral_block : constraints::contact_block;
+                bounds[i] = D.bounds(i);
+            }
+            for (std::size_t r = 0; r < n; ++r) {
+                q[r] = qv[r];
+                for (std::size_t c = 0; c < n; ++c) W[r * n + c] = P.W[r][c];
+            }
+            const constraints::contact_report<T> newton =
+                constraints::newton_polish<T>(W, q, std::span<const T>(mu.data(), m), std::span<T>(force.data(), n), rest,
+                                              settings.solver.tolerance, 30, std::span<const unsigned char>(kind.data(), m),
+                                              std::span<const std::array<vec3<T>, 2>>(bounds.data(), m));
+            report.residual = newton.residual;
+            report.converged = newton.converged;
+            report.polish_steps = newton.sweeps;
+            report.error = newton.error;
+        }
     }
     if (report.error != error_code::none) return rank;
     for (std::size_t k = 0; k < Tree::nv; ++k)

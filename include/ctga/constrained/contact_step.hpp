@@ -14,7 +14,8 @@
 //   2. each joint of one dof within `limit_margin` of a finite bound a limit block, each joint with
 //      friction a friction block; the stepper's permanent blocks (loops, welds) first;
 //   3. impulse_dynamics.hpp over h (implicit joint damping), the solver warm-started from the last
-//      step's impulses of the same blocks (a contact's id: its two shapes and manifold point);
+//      step's impulses of the same blocks (a contact's id: its two shapes and manifold point), its
+//      sweeps (at most the settings' budget) finished by Newton when they stop above the tolerance;
 //   4. q ← q ⊕ h q̇⁺ (configuration_space.hpp).
 // The report gives the solver's residual and sweeps, the counts and the deepest overlap; a step
 // whose blocks pass the capacity, or whose inputs or solve fail, leaves (q, q̇) as they were and
@@ -43,7 +44,7 @@ struct step_settings {
     T mu = T(1);                 // Coulomb's coefficient of every contact
     T margin = T(5e-3);          // contacts found this far apart (m)
     T limit_margin = T(2e-2);    // a limit is a row within this of its bound (rad or m)
-    impulse_settings<T> solve{{{T(1e-9), 200}}, T(0.2)};  // tolerance on the impulses (N s), sweeps; the recovery β
+    impulse_settings<T> solve{{{T(1e-9), 50}}, T(0.2)};  // tolerance on the impulses (N s), sweeps before Newton; the recovery β
 };
 
 template <class T>
@@ -114,7 +115,7 @@ class contact_stepper {
                 if (last_keys_[j] == keys_[i]) r = {last_[3 * j], last_[3 * j + 1], last_[3 * j + 2]};
             for (std::size_t a = 0; a < 3; ++a) result_.impulse[3 * i + a] = r[a];
         }
-        impulse_dynamics(m, q, qd, tau, blocks_, settings.step, limits.damping, settings.solve, result_);
+        impulse_dynamics(m, q, qd, tau, blocks_, settings.step, limits.damping, settings.solve, result_, std::span<T>(scratch_));
         report.solver = result_.report;
         if (result_.error != error_code::none) return report.error = result_.error, report;
         last_count_ = count_;
@@ -148,6 +149,7 @@ class contact_stepper {
     std::size_t count_ = 0, last_count_ = 0;
     std::array<T, 3 * Capacity> last_{};
     impulse_result<Tree, T, Capacity> result_{};
+    std::array<T, dynamics_detail::polish_scratch_size(Capacity)> scratch_;
 };
 
 }  // namespace ctga::constrained

@@ -24,6 +24,7 @@
 
 #include <array>
 #include <cstddef>
+#include <span>
 
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/minverse.hpp"
@@ -53,13 +54,15 @@ struct impulse_result {
 };
 
 // q̇⁺ and r over a step h (above); `out.impulse` holds the warm start on entry (zeros, or the last
-// step's impulses of the same blocks). Refused: non-finite inputs, h < 0 (non_finite), negative
+// step's impulses of the same blocks); with scratch of dynamics_detail::polish_scratch_size(Capacity)
+// numbers, a solve the sweeps leave unconverged is finished by Newton (constrained_dynamics.hpp's
+// solve_rows). Refused: non-finite inputs, h < 0 (non_finite), negative
 // damping (negative_limit), a massless subtree.
 template <class Tree, class T, std::size_t Capacity>
 constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd,
                                 const chains::joint_vector<Tree, T>& tau, const constraint_set<Tree, T, Capacity>& C, const T& h,
                                 const chains::joint_vector<Tree, T>& damping, const impulse_settings<T>& settings,
-                                impulse_result<Tree, T, Capacity>& out) noexcept {
+                                impulse_result<Tree, T, Capacity>& out, std::span<T> scratch = {}) noexcept {
     static_assert(!Tree::has_mimic, "ctga::constrained: trees with mimic joints are not supported yet (their H is not the tree factor's)");
     using namespace chains::algorithm_detail;
     out.error = error_code::none;
@@ -98,7 +101,7 @@ constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::c
         else if (held) qv[r] += beta * phi / h;
     }
     for (std::size_t r = R.count; r < 3 * Capacity; ++r) out.impulse[r] = T(0);
-    out.rank = dynamics_detail::solve_rows(f, z, R, P, qv, C, settings.rows, h, out.impulse, out.report);
+    out.rank = dynamics_detail::solve_rows(f, z, R, P, qv, C, settings.rows, h, out.impulse, out.report, scratch);
     if (out.report.error != error_code::none) return void(out.error = out.report.error);
     for (std::size_t k = 0; k < Tree::nv; ++k) out.qd[k] = qd[k] + z[k];
 }

@@ -140,6 +140,25 @@ constexpr void rows_of(const chains::algorithm_detail::tree_factor<Tree, T>& f, 
     }
 }
 
+// The rows at (q, q̇), W from the factor f, and q = J H⁻¹ b for z = L⁻ᵀ b (before the bias terms
+// each level adds): what both levels (forces here, impulses in impulse_dynamics.hpp) solve.
+template <class Tree, class T, std::size_t Capacity>
+struct rows_problem {
+    constraint_rows<Tree, T, Capacity> R;
+    delassus_parts<Tree, T, Capacity> P;
+    std::array<T, 3 * Capacity> qv;
+};
+template <class Tree, class T, std::size_t Capacity>
+constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
+                            const chains::joint_vector<Tree, T>& qd, const constraint_set<Tree, T, Capacity>& C,
+                            const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z) noexcept {
+    tree_motion<Tree, T> g(uninitialized);
+    fill_tree_motion(g, m, q, qd);
+    fill_rows(x.R, g, C, q, qd);
+    fill_delassus(x.P, f, x.R);
+    rows_of(f, z, x.R, x.P, x.qv);
+}
+
 // Scratch for solve_rows' Newton finish on a set of up to Capacity blocks: W and q compact, then
 // newton_polish.hpp's own.
 [[nodiscard]] constexpr std::size_t polish_scratch_size(std::size_t capacity) noexcept {
@@ -241,14 +260,9 @@ struct constrained_forward_dynamics_t {
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = tau[k] - z[k];
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
         // the rows, W, and q = J H⁻¹ (τ − C) + J̇ q̇ − a_ref
-        tree_motion<Tree, T> g(uninitialized);
-        fill_tree_motion(g, m, q, qd);
-        constraint_rows<Tree, T, Capacity> R;
-        fill_rows(R, g, C, q, qd);
-        delassus_parts<Tree, T, Capacity> P;
-        fill_delassus(P, f, R);
-        std::array<T, 3 * Capacity> qv;
-        dynamics_detail::rows_of(f, z, R, P, qv);
+        dynamics_detail::rows_problem<Tree, T, Capacity> x;
+        dynamics_detail::fill_problem(x, m, q, qd, C, f, z);
+        auto& [R, P, qv] = x;
         const T w = settings.stabilization;
         for (std::size_t r = 0; r < R.count; ++r) {
             qv[r] += R.bias[r];

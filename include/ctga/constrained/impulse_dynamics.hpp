@@ -81,14 +81,9 @@ constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::c
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
     }
     // the rows, W, and q = J q̇ + J (H + hB)⁻¹ h (τ − C − B q̇) + b
-    tree_motion<Tree, T> g(uninitialized);
-    fill_tree_motion(g, m, q, qd);
-    constraint_rows<Tree, T, Capacity> R;
-    fill_rows(R, g, C, q, qd);
-    delassus_parts<Tree, T, Capacity> P;
-    fill_delassus(P, f, R);
-    std::array<T, 3 * Capacity> qv;
-    dynamics_detail::rows_of(f, z, R, P, qv);
+    dynamics_detail::rows_problem<Tree, T, Capacity> x;
+    dynamics_detail::fill_problem(x, m, q, qd, C, f, z);
+    auto& [R, P, qv] = x;
     const T beta = settings.recovery;
     for (std::size_t r = 0; r < R.count; ++r) {
         qv[r] += R.rate[r];

@@ -25,6 +25,7 @@
 
 #include <ctga/chains/algorithms.hpp>
 #include <ctga/constrained/constrained_dynamics.hpp>
+#include <ctga/constrained/constrained_inverse_dynamics.hpp>
 
 #include "support/catch.hpp"
 #include "support/fc3d_reference.hpp"
@@ -338,6 +339,79 @@ ch::configuration<four_bar> closed_at(double theta) {
 double freudenstein(double theta, double phi) {
     const double K1 = bar_d / bar_a, K2 = bar_d / bar_c, K3 = (bar_a * bar_a - bar_b * bar_b + bar_c * bar_c + bar_d * bar_d) / (2 * bar_a * bar_c);
     return K1 * std::cos(phi) - K2 * std::cos(theta) + K3 - std::cos(theta - phi);
+}
+
+TEST_CASE("constrained inverse dynamics: the least forces, and back through forward dynamics", "[constrained]") {
+    worst w("constrained inverse dynamics");
+    std::size_t on_cone = 0;
+    for (std::uint64_t seed = 50; seed < 60; ++seed) {
+        // bilateral: a welded foot, a held foot, a loop (12 rows, the base's 6 equations): λ the
+        // least-norm solution of J_uᵀ λ = (H q̈ + C)_u, from Eigen on the reference rows
+        walker_case c = make_walker_case(seed);
+        for (std::size_t k = 0; k < 6; ++k) c.tau[k] = 0;  // an unactuated base
+        const auto fwd = cn::constrained_forward_dynamics(c.m, c.q, c.qd, c.tau, c.C);
+        REQUIRE(fwd.error == ctga::error_code::none);
+        const auto inv = cn::constrained_inverse_dynamics(c.m, c.q, c.qd, fwd.qdd, c.C);
+        REQUIRE(inv.error == ctga::error_code::none);
+        CHECK(inv.report.residual < 1e-9);  // (the default tolerance 1e-10 N is at rounding's floor for these forces)
+        const MatrixXd A = c.ref.J.leftCols(6).transpose();
+        const VectorXd b = vec(ch::rnea(c.m, c.q, c.qd, fwd.qdd), walker::nv).head(6);
+        const VectorXd least = A.transpose() * (A * A.transpose()).ldlt().solve(b);
+        CHECK(w("bilateral λ vs Aᵀ (A Aᵀ)⁻¹ b", rel(vec(inv.force, 12), least)) < 1e-10);
+        for (std::size_t k = 0; k < 6; ++k) CHECK(inv.tau[k] == 0.0);
+        // H q̈ + C = τ + Jᵀ λ on every dof
+        const VectorXd balance = dense(ch::crba(c.m, c.q)) * vec(fwd.qdd, walker::nv) +
+                                 vec(ch::rnea(c.m, c.q, c.qd, ch::joint_vector<walker>{}), walker::nv) - vec(inv.tau, walker::nv) -
+                                 c.ref.J.transpose() * vec(inv.force, 12);
+        CHECK(w("H q̈ + C − τ − Jᵀ λ", balance.lpNorm<Eigen::Infinity>()) < 1e-10);
+        // back: forward dynamics under τ gives q̈ (its λ: the one whose J q̈ + J̇ q̇ = 0, unique)
+        const auto back = cn::constrained_forward_dynamics(c.m, c.q, c.qd, inv.tau, c.C);
+        CHECK(w("forward(inverse(q̈)) − q̈", rel(vec(back.qdd, walker::nv), vec(fwd.qdd, walker::nv))) < 1e-9);
+
+        // contacts: both feet and the hand on the ground (μ 0.1: cones reached), the base
+        // unactuated; forward dynamics' λ_f is feasible for the inverse problem, whose λ is the
+        // least: in the cones, A λ = b, and λ · (λ_f − λ) ≥ 0 (the optimality of ½‖λ‖² there)
+        walker_case d = make_walker_case(seed);
+        d.C.clear();
+        for (std::size_t k = 0; k < 6; ++k) d.tau[k] = 0;
+        const ctga::vec3<double> up{0, 0, 1};
+        REQUIRE(d.C.touch(d.m, d.q, ch::frame<"foot_l">, up, 0.1) == ctga::error_code::none);
+        REQUIRE(d.C.touch(d.m, d.q, ch::frame<"foot_r">, up, 0.1) == ctga::error_code::none);
+        REQUIRE(d.C.touch(d.m, d.q, ch::frame<"hand">, up, 0.1) == ctga::error_code::none);
+        cn::constrained_settings<double> s;
+        s.solver.tolerance = 1e-12;
+        s.solver.max_sweeps = 100000;
+        const auto f = cn::constrained_forward_dynamics(d.m, d.q, d.qd, d.tau, d.C, s);
+        REQUIRE(f.error == ctga::error_code::none);
+        const auto g = cn::constrained_inverse_dynamics(d.m, d.q, d.qd, f.qdd, d.C, s);
+        REQUIRE(g.error == ctga::error_code::none);
+        CHECK(g.report.converged);
+        double dot = 0, norm = 0;
+        for (std::size_t i = 0; i < 3; ++i) {
+            const double n = g.force[3 * i], t = std::hypot(g.force[3 * i + 1], g.force[3 * i + 2]);
+            CHECK(t <= 0.1 * n + 1e-12);
+            on_cone += n > 1e-9 && t > 0.1 * n - 1e-9;
+            for (std::size_t a = 0; a < 3; ++a) dot += g.force[3 * i + a] * (f.force[3 * i + a] - g.force[3 * i + a]), norm += g.force[3 * i + a] * g.force[3 * i + a];
+        }
+        w("contacts: λ · (λ_f − λ) / ‖λ‖² (≥ 0)", -dot / std::max(norm, 1.0));
+        CHECK(dot >= -1e-10 * std::max(norm, 1.0));
+        // A λ = b: forward dynamics' λ_f met the base's equations (τ_u = 0), so J_uᵀ (λ − λ_f) = 0,
+        // J's rows (n, t1, t2) = the world's (z, x, y) from the frame Jacobians
+        const auto kd = ch::forward_kinematics(d.m, d.q);
+        const std::array<ch::jacobian_matrix<walker>, 3> JF{ch::frame_jacobian(d.m, kd, ch::frame<"foot_l">, ch::reference::local_world_aligned),
+                                                            ch::frame_jacobian(d.m, kd, ch::frame<"foot_r">, ch::reference::local_world_aligned),
+                                                            ch::frame_jacobian(d.m, kd, ch::frame<"hand">, ch::reference::local_world_aligned)};
+        double unbalanced = 0;
+        for (std::size_t k = 0; k < 6; ++k) {
+            double sum = 0;
+            for (std::size_t i = 0; i < 3; ++i)
+                for (std::size_t a = 0; a < 3; ++a) sum += JF[i][k][3 + (a + 2) % 3] * (g.force[3 * i + a] - f.force[3 * i + a]);
+            unbalanced = std::max(unbalanced, std::abs(sum));
+        }
+        CHECK(w("contacts: J_uᵀ (λ − λ_f)", unbalanced) < 1e-9);
+    }
+    std::printf("inverse dynamics: %zu contacts of 30 on their cone's boundary\n", on_cone);
+    CHECK(on_cone >= 3);
 }
 
 TEST_CASE("a four-bar linkage closed by a constraint follows Freudenstein's equation", "[constrained]") {

@@ -1,6 +1,7 @@
 // A quadruped from its URDF (tests/data/quadruped.urdf, floating base) dropped onto the ground,
 // standing up to its stance under a PD controller and swaying its trunk from side to side:
-// spheres on its four feet, a box for its trunk, the ground a half-space, its URDF's joint limits
+// its URDF's collision geometry (make_geometry: spheres on its four feet, a box for its trunk, a
+// mesh's convex hull on a hip), the ground a half-space, its URDF's joint limits
 // (the knees reach theirs), a step of 1 ms (constrained/contact_step.hpp). Every 0.1 s it prints
 // the four feet's normal forces, their sum against the weight, the fastest foot slip and the
 // solver's residual.
@@ -16,29 +17,23 @@
 #include <ctga/chains/algorithms.hpp>
 #include <ctga/constrained/contact_step.hpp>
 
-#include "quadruped.hpp"  // generated: namespace quadruped { using tree = …; make_model<T>(); make_limits<T>(); }
+#include "quadruped.hpp"  // generated: namespace quadruped { using tree = …; make_model<T>(); make_limits<T>(); make_geometry<T>(); }
 
 namespace ch = ctga::chains;
 namespace cn = ctga::constrained;
 namespace co = ctga::collision;
 using robot = quadruped::tree;
-using shapes = co::shape<co::sphere<double>, co::box<double>>;
 using ground = co::shape<co::half_space<double>>;
 
 int main(int argc, char** argv) {
     const auto model = quadruped::make_model<double>();
     const auto limits = quadruped::make_limits<double>();
-    if (!model || !limits) return std::printf("quadruped: %s\n", ctga::describe(model ? limits.error : model.error)), 1;
+    // the URDF's <collision>: a sphere of 2 cm on each foot, a box on the trunk, a hip cover's hull
+    const auto geometry = quadruped::make_geometry<double>();
+    if (!model || !limits || !geometry)
+        return std::printf("quadruped: %s\n", ctga::describe(!model ? model.error : !limits ? limits.error : geometry.error)), 1;
     const ch::model<robot>& m = *model;
-
-    // collision geometry: a sphere of 2 cm on each foot frame, a box on the trunk
-    cn::robot_geometry<robot, shapes, double, 5> geometry;
-    const double r = 0.02;
-    geometry.attach(m, ch::frame<"FL_foot">, co::sphere<double>{r});
-    geometry.attach(m, ch::frame<"FR_foot">, co::sphere<double>{r});
-    geometry.attach(m, ch::frame<"RL_foot">, co::sphere<double>{r});
-    geometry.attach(m, ch::frame<"RR_foot">, co::sphere<double>{r});
-    geometry.attach(0, co::box<double>{{0.25, 0.1, 0.05}});
+    const double r = 0.02;                                  // the feet's radius
     const std::array<cn::static_shape<ground>, 1> world{};  // the ground: z ≤ 0
 
     cn::contact_stepper<robot, double, 24> stepper;
@@ -67,7 +62,7 @@ int main(int argc, char** argv) {
             const std::array<double, 3> target{sway, 0.45 * stance, -0.9 * stance};
             for (std::size_t j = 0; j < 3; ++j) tau[6 + 3 * leg + j] = 300.0 * (target[j] - q[8 + 3 * leg + j]);
         }
-        const auto report = stepper.step(m, q, qd, tau, geometry, std::span<const cn::static_shape<ground>>(world), settings);
+        const auto report = stepper.step(m, q, qd, tau, *geometry, std::span<const cn::static_shape<ground>>(world), settings);
         if (report.error != ctga::error_code::none) return std::printf("step %d: %s\n", n, ctga::describe(report.error)), 1;
         // each foot's normal force: its contact's normal impulse over h (body 3 + 3 leg: its calf)
         std::array<double, 4> force{};

@@ -4,9 +4,12 @@
 //   - the impact of a double pendulum's tip on the ground (frictionless, Coulomb, sticking)
 //     against the closed form of tests/support/double_pendulum_impact.hpp (the 2 × 2 mass matrix
 //     from the kinetic energy, the tip's Jacobian by hand, Moreau's law case by case);
-//   - a quadruped (tests/data/quadruped.urdf through the converter) with a sphere on each foot,
+//   - a quadruped (tests/data/quadruped.urdf through the converter) with its URDF's collision
+//     geometry (make_geometry: a sphere on each foot, a box on its trunk, a mesh's hull on a hip),
 //     dropped onto the ground under a PD controller: at rest the feet's normal forces sum to its
 //     weight (center_of_mass's mass times g), no foot slips (< 1 µm/s) and none sinks;
+//   - that geometry against the URDF: six shapes on the bodies of their links, of the URDF's sizes
+//     (the STL box's eight corners for the hull), each where its link's frame is (frame_pose);
 //   - a link resting on its joint limit under gravity: the limit's force is the gravity torque
 //     m g c cos q (statics), the overlap gone;
 //   - refused input: a limit with lower > upper, a stepper past its capacity.
@@ -15,6 +18,9 @@
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <string_view>
+#include <type_traits>
+#include <variant>
 
 #include <ctga/chains/algorithms.hpp>
 #include <ctga/constrained/contact_step.hpp>
@@ -94,7 +100,6 @@ TEST_CASE("The impact of a double pendulum's tip on the ground is Moreau's law's
 
 namespace {
 using quad = quadruped::tree;
-using shape_kinds = co::shape<co::sphere<double>>;
 using ground_kinds = co::shape<co::half_space<double>>;
 
 // The quadruped's actuated joints at (hip, thigh, knee) = (0, 0.45, −0.9) on every leg: each foot
@@ -112,12 +117,10 @@ ch::configuration<quad> standing(double height) {
 TEST_CASE("A quadruped stands on four feet: the forces carry its weight, no foot slips", "[constrained][contact_step]") {
     const auto m = *quadruped::make_model<double>();
     static_assert(quad::nv == 18);
-    cn::robot_geometry<quad, shape_kinds, double, 4> feet;
-    const double radius = 0.02;
-    REQUIRE(feet.attach(m, ch::frame<"FL_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
-    REQUIRE(feet.attach(m, ch::frame<"FR_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
-    REQUIRE(feet.attach(m, ch::frame<"RL_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
-    REQUIRE(feet.attach(m, ch::frame<"RR_foot">, co::sphere<double>{radius}) == ctga::error_code::none);
+    // the URDF's <collision>: a sphere on each foot, the trunk's box and a hip's hull far above the ground
+    const auto geometry = quadruped::make_geometry<double>();
+    REQUIRE(geometry);
+    const double radius = 0.02;  // the feet's spheres
     const std::array<cn::static_shape<ground_kinds>, 1> ground{};
     cn::contact_stepper<quad, double, 16> stepper;
     stepper.limits = *quadruped::make_limits<double>();
@@ -133,7 +136,7 @@ TEST_CASE("A quadruped stands on four feet: the forces carry its weight, no foot
     for (int n = 0; n < 3000; ++n) {
         ch::joint_vector<quad> tau{};
         for (std::size_t j = 0; j < 12; ++j) tau[6 + j] = 200.0 * (target[8 + j] - q[8 + j]);
-        const auto report = stepper.step(m, q, qd, tau, feet, std::span<const cn::static_shape<ground_kinds>>(ground), s);
+        const auto report = stepper.step(m, q, qd, tau, *geometry, std::span<const cn::static_shape<ground_kinds>>(ground), s);
         REQUIRE(report.error == ctga::error_code::none);
         REQUIRE(report.solver.converged);
         worst(residual, report.solver.residual);
@@ -156,6 +159,51 @@ TEST_CASE("A quadruped stands on four feet: the forces carry its weight, no foot
     CHECK(force_error < 1e-6);
     CHECK(slip < 1e-6);
     CHECK(deepest < 1e-6);
+}
+
+TEST_CASE("The URDF's collision geometry: its shapes on their links' bodies, where their frames are", "[constrained][urdf]") {
+    const auto m = *quadruped::make_model<double>();
+    const auto geometry = quadruped::make_geometry<double>();
+    REQUIRE(geometry);
+    static_assert(std::is_same_v<quadruped::collision_shape<double>, co::shape<co::sphere<double>, co::box<double>, co::convex_hull<double, 8>>>);
+    static_assert(quadruped::collision_count == 6);
+    static_assert(quadruped::make_geometry<double>().error == ctga::error_code::none);  // constexpr: the hull too
+    const auto shapes = geometry->shapes();
+    REQUIRE(shapes.size() == 6);
+    CHECK(quadruped::collision_links == std::array<std::string_view, 6>{"trunk", "FL_hip", "FL_foot", "FR_foot", "RL_foot", "RR_foot"});
+    // the trunk's box on body 0, the hull on FL_hip's body, each foot's sphere on its calf's (the foot merged into it)
+    const std::array<std::string_view, 6> bodies{"trunk", "FL_hip", "FL_calf", "FR_calf", "RL_calf", "RR_calf"};
+    for (std::size_t i = 0; i < 6; ++i) CHECK(quadruped::body_names[static_cast<std::size_t>(shapes[i].body)] == bodies[i]);
+    CHECK(shapes[0].body == 0);
+    CHECK(std::get<co::box<double>>(shapes[0].shape).half == ctga::vec3<double>{0.25, 0.1, 0.05});  // <box size="0.5 0.2 0.1">
+    // the hull of meshes/hip_cover.stl: the box's 8 corners, its 6 faces
+    const auto& hull = std::get<co::convex_hull<double, 8>>(shapes[1].shape);
+    CHECK(hull.vertex_count == 8);
+    CHECK(hull.face_count == 6);
+    for (std::size_t v = 0; v < hull.vertex_count; ++v) {
+        CHECK(std::abs(hull.vertex[v][0]) == 0.03125);
+        CHECK((hull.vertex[v][1] == 0.0 || hull.vertex[v][1] == 0.046875));
+        CHECK(std::abs(hull.vertex[v][2]) == 0.015625);
+    }
+    for (std::size_t i = 2; i < 6; ++i) {
+        CHECK(std::get<co::sphere<double>>(shapes[i].shape).radius == 0.02);
+        CHECK(shapes[i].at.t == ctga::vec3<double>{0, 0, -0.2});  // the foot joint's <origin> in the calf
+    }
+    // in any configuration each shape is where its link's frame is: its body's pose composed with its placement
+    const auto k = ch::forward_kinematics(m, standing(0.3));
+    const std::array frames{ch::frame_pose(m, k, ch::frame<"trunk">),   ch::frame_pose(m, k, ch::frame<"FL_hip">),
+                            ch::frame_pose(m, k, ch::frame<"FL_foot">), ch::frame_pose(m, k, ch::frame<"FR_foot">),
+                            ch::frame_pose(m, k, ch::frame<"RL_foot">), ch::frame_pose(m, k, ch::frame<"RR_foot">)};
+    double off = 0;
+    for (std::size_t i = 0; i < 6; ++i) {
+        const ctga::motor_map<double> X = ctga::compose(k.pose[static_cast<std::size_t>(shapes[i].body)], shapes[i].at);
+        for (std::size_t r = 0; r < 3; ++r) {
+            worst(off, std::abs(X.t[r] - frames[i].t[r]));
+            for (std::size_t c = 0; c < 3; ++c) worst(off, std::abs(X.R[r][c] - frames[i].R[r][c]));
+        }
+    }
+    std::printf("URDF collision geometry: 6 shapes, placements vs the links' frames %.1e\n", off);
+    CHECK(off < 1e-15);
 }
 
 namespace {

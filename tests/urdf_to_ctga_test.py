@@ -4,12 +4,14 @@ tests/data/: every error case exits with status 1 and a message naming the offen
 writes no header); questionable inertia warns (exit 0) unless --strict; good URDFs give the
 expected joint types, body and frame order, names, numbers (rotations, merged inertias, frame
 placements, parsed back from the header and checked against computations written here) and
-options. Registered in tests/CMakeLists.txt as the CTest test urdf_to_ctga_script. Standard
-library only."""
+options; <collision> elements give make_geometry's shapes (sizes, placements, STL meshes' hulls,
+reduced hulls, excluded pairs), and a robot without them the header it had before. Registered in
+tests/CMakeLists.txt as the CTest test urdf_to_ctga_script. Standard library only."""
 
 import math
 import os
 import re
+import struct
 import subprocess
 import sys
 import tempfile
@@ -140,6 +142,91 @@ def limits(header):
     return {(a, int(k)): float(v) for a, k, v in re.findall(r"l\.(\w+)\[(\d+)\] = T\(([^()]*)\);", block)}, block
 
 
+def spaced(v):
+    return " ".join(map(repr, v))
+
+
+def collision(geometry, xyz="0 0 0", rpy="0 0 0"):
+    return f'<collision><origin xyz="{xyz}" rpy="{rpy}"/><geometry>{geometry}</geometry></collision>'
+
+
+def stl_binary(path, triangles):
+    with open(path, "wb") as f:
+        f.write(b"binary STL written by urdf_to_ctga_test.py".ljust(80, b" "))
+        f.write(struct.pack("<I", len(triangles)))
+        for t in triangles:
+            f.write(struct.pack("<12fH", 0.0, 0.0, 0.0, *(c for p in t for c in p), 0))
+
+
+def stl_ascii(path, triangles):
+    lines = ["solid test"]
+    for t in triangles:
+        lines += ["  facet normal 0 0 0", "    outer loop"] + [f"      vertex {x!r} {y!r} {z!r}" for x, y, z in t]
+        lines += ["    endloop", "  endfacet"]
+    with open(path, "w", encoding="ascii") as f:
+        f.write("\n".join(lines + ["endsolid test"]) + "\n")
+
+
+def split_cube(size):
+    """The 24 triangles of the cube [0, size]^3, each face split at its centre: 14 points, 8 corners."""
+    triangles = []
+    for axis in range(3):
+        for side in (0.0, size):
+            def point(a, b):
+                p = [0.0] * 3
+                p[axis], p[(axis + 1) % 3], p[(axis + 2) % 3] = side, a, b
+                return tuple(p)
+            ring = [point(0.0, 0.0), point(size, 0.0), point(size, size), point(0.0, size)]
+            triangles += [(ring[i], ring[(i + 1) % 4], point(size / 2, size / 2)) for i in range(4)]
+    return triangles
+
+
+def corners(size):
+    return sorted([x, y, z] for x in (0.0, size) for y in (0.0, size) for z in (0.0, size))
+
+
+def ball(rings=10, sectors=16):
+    """Points on the unit sphere (rings of latitude and the poles), all corners of their hull."""
+    points = [(0.0, 0.0, 1.0), (0.0, 0.0, -1.0)]
+    for i in range(1, rings + 1):
+        lat = math.pi * i / (rings + 1)
+        points += [(math.sin(lat) * math.cos(lon), math.sin(lat) * math.sin(lon), math.cos(lat))
+                   for lon in (2 * math.pi * j / sectors for j in range(sectors))]
+    return points
+
+
+def collision_kinds(header):
+    """The kinds of collision_shape<T>, in order (convex_hull with its capacity)."""
+    variant = re.search(r"using collision_shape = ctga::collision::shape<(.*)>;", header).group(1)
+    return re.findall(r"ctga::collision::(\w+<T(?:, \d+)?)>", variant)
+
+
+def shapes(header):
+    """[(body, kind, numbers)] of make_geometry's shapes: the make_ call's numbers, a hull's vertices."""
+    out = []
+    for body, call in re.findall(r"if \(const auto e = place\(\d+, (-?\d+), (.*)\); e != ", header):
+        if "make_hull" in call:
+            name = re.search(r"\((hull_\d+)\)\)$", call).group(1)
+            block = header[header.index(f" {name}{{{{"):]
+            x = numbers(block[:block.index("}};")])
+            out.append((int(body), "hull", sorted(x[i:i + 3] for i in range(0, len(x), 3))))
+        else:
+            out.append((int(body), re.match(r"ctga::collision::make_(\w+)\(", call).group(1), numbers(call)))
+    return out
+
+
+def shape_motor(header, index):
+    """(translation, theta, unit axis) of shape index's row of make_geometry's placements table."""
+    row = re.search(r"^        \{([^}]*)\},  // shape " + str(index) + ":", header, re.M)
+    x = numbers(row.group(1))
+    return x[0:3], x[3], x[4:7]
+
+
+def excluded(header):
+    """[(body a, body b)] of make_geometry's excluded pairs."""
+    return [(int(a), int(b)) for a, b in re.findall(r"^        \{(\d+), (\d+)\},  // links", header, re.M)]
+
+
 def dofs(types):
     n = 0
     for _, t in types:
@@ -199,10 +286,13 @@ class Converter(unittest.TestCase):
         self.tmp = tempfile.TemporaryDirectory()
         self.addCleanup(self.tmp.cleanup)
 
-    def run_script(self, text, *args, name="robot"):
-        path = os.path.join(self.tmp.name, "robot.urdf")
-        with open(path, "w", encoding="utf-8") as f:
-            f.write(text)
+    def run_script(self, text, *args, name="robot", source=None):
+        """The converter on `text` written to robot.urdf in the temporary directory (or on the file
+        `source`): (exit status, header or None, stderr)."""
+        path = source or os.path.join(self.tmp.name, "robot.urdf")
+        if source is None:
+            with open(path, "w", encoding="utf-8") as f:
+                f.write(text)
         out = os.path.join(self.tmp.name, "out.hpp")
         if os.path.exists(out):
             os.remove(out)
@@ -1211,10 +1301,195 @@ class Converter(unittest.TestCase):
         self.assertIn("{T(0.0), T(0.0), T(0.1)}}}));", body_block(header, 1))
         self.assertIn("--strict", header.splitlines()[1])
 
+    # ---- collision geometry ------------------------------------------------------------------
+
+    def write(self, name, text):
+        path = os.path.join(self.tmp.name, name)
+        os.makedirs(os.path.dirname(path), exist_ok=True)
+        with open(path, "w", encoding="utf-8") as f:
+            f.write(text)
+        return path
+
+    def test_collision_shapes(self):
+        text = chain(link_a=link("a", inertial() + collision('<box size="0.4 0.2 0.1"/>', xyz="0.1 0 0.2",
+                                                             rpy="0.3 -0.2 0.5")),
+                     link_b=link("b", inertial() + collision('<cylinder radius="0.03" length="0.2"/>') +
+                                 collision('<sphere radius="0.05"/>', xyz="0 0 0.4")))
+        header = self.convert(text)
+        # the variant of the kinds present, in ctga's order; the shapes link by link, each link's in document order
+        self.assertEqual(collision_kinds(header), ["sphere<T", "box<T", "cylinder<T"])
+        self.assertIn("inline constexpr std::size_t collision_count = 3;", header)
+        self.assertEqual(names(header, "collision_links"), ["a", "b", "b"])
+        self.assertIn("constexpr ctga::checked<ctga::constrained::robot_geometry<tree, collision_shape<T>, T, "
+                      "collision_count>> make_geometry() noexcept {", header)
+        # a box's half extents, a cylinder's radius and half height (z its axis in both), a sphere's radius
+        self.assertEqual(shapes(header), [(0, "box", [0.2, 0.1, 0.05]), (1, "cylinder", [0.03, 0.1]),
+                                          (1, "sphere", [0.05])])
+        t, theta, u = shape_motor(header, 0)
+        self.assertEqual(t, [0.1, 0.0, 0.2])
+        self.assert_rotation(theta, u, rpy_matrix_here(0.3, -0.2, 0.5))
+        self.assertEqual(shape_motor(header, 1), ([0.0] * 3, 0.0, [0.0, 0.0, 1.0]))
+        self.assertEqual(shape_motor(header, 2), ([0.0, 0.0, 0.4], 0.0, [0.0, 0.0, 1.0]))
+        # the headers of the kinds present, and no more
+        for h in ("sphere.hpp", "box.hpp", "cylinder.hpp", "shape_set.hpp"):
+            self.assertIn(f"#include <ctga/collision/{h}>", header)
+        self.assertIn("#include <ctga/constrained/robot_geometry.hpp>", header)
+        self.assertNotIn("hull.hpp", header)
+        self.assertNotIn("#include <span>", header)
+        self.assertIn("<collision>: make_geometry<T>()", header)
+        # without <collision>: none of it
+        header = self.convert(chain())
+        for absent in ("make_geometry", "collision_shape", "robot_geometry.hpp", "#include <ctga/collision/"):
+            self.assertNotIn(absent, header)
+        self.assertIn("visuals, collisions, transmissions.", header)
+
+    def test_collision_on_merged_links_and_the_world(self):
+        jc_xyz, jc_rpy, c_xyz, c_rpy = [0.1, 0.2, 0.3], [0.2, 0.1, -0.4], [0.05, 0.0, -0.02], [0.0, 0.3, 0.0]
+        text = chain(base=link("base", collision('<sphere radius="0.1"/>'))).replace(
+            "</robot>", joint("jc", "fixed", "b", "c", xyz=spaced(jc_xyz), rpy=spaced(jc_rpy)) +
+            link("c", collision('<box size="0.1 0.1 0.1"/>', xyz=spaced(c_xyz), rpy=spaced(c_rpy))) + "</robot>")
+        header, lines = self.convert_warned(text)
+        self.assertEqual(lines, ['urdf_to_ctga: warning: link "base" is fixed to the world: its 1 <collision> shape(s) '
+                                 "left out (the world's shapes are constrained::static_shape, not the robot's)"])
+        # c is merged into b's body: its box there, at jc's origin followed by the box's
+        self.assertEqual(shapes(header), [(1, "box", [0.05, 0.05, 0.05])])
+        self.assertEqual(names(header, "collision_links"), ["c"])
+        R = rpy_matrix_here(*jc_rpy)
+        t, theta, u = shape_motor(header, 0)
+        self.assert_close(t, [jc_xyz[i] + mv(R, c_xyz)[i] for i in range(3)])
+        self.assert_rotation(theta, u, mm(R, rpy_matrix_here(*c_rpy)))
+        # with a floating base the root is body 0, its sphere on it
+        header = self.convert(text, "--floating-base")
+        self.assertEqual([(b, k) for b, k, _ in shapes(header)], [(0, "sphere"), (2, "box")])
+
+    def test_collision_stl_meshes(self):
+        stl_binary(os.path.join(self.tmp.name, "cube.stl"), split_cube(0.125))
+        os.makedirs(os.path.join(self.tmp.name, "pkg", "meshes"))
+        stl_ascii(os.path.join(self.tmp.name, "pkg", "meshes", "cube.STL"), split_cube(0.125))
+        text = chain(link_a=link("a", inertial() + collision('<mesh filename="cube.stl"/>')),
+                     link_b=link("b", inertial() + collision('<mesh filename="package://pkg/meshes/cube.STL" '
+                                                             'scale="2 2 -2"/>', xyz="0 0 0.5") +
+                                 collision(f'<mesh filename="file://{self.tmp.name}/cube.stl"/>')))
+        header = self.convert(text)
+        # each face's centre is no corner: the hull's 8 vertices; a mirroring scale is a mirrored hull
+        self.assertEqual(shapes(header), [(0, "hull", corners(0.125)),
+                                          (1, "hull", sorted([x, y, -z] for x, y, z in corners(0.25))),
+                                          (1, "hull", corners(0.125))])
+        self.assertEqual(collision_kinds(header), ["convex_hull<T, 8"])
+        self.assertIn("ctga::collision::make_hull<8, T>(std::span<const ctga::vec3<T>>(hull_0))", header)
+        self.assertIn('// shape 1: link "b", mesh "package://pkg/meshes/cube.STL" scale 2.0 2.0 -2.0: its convex hull, '
+                      "8 vertices", header)
+        self.assertEqual(shape_motor(header, 1)[0], [0.0, 0.0, 0.5])
+        for h in ("#include <span>", "#include <ctga/collision/hull.hpp>"):
+            self.assertIn(h, header)
+
+    def test_collision_mesh_reduced(self):
+        points = ball()
+        stl_ascii(os.path.join(self.tmp.name, "ball.stl"),
+                  [(points[i], points[(i + 1) % len(points)], points[(i + 2) % len(points)])
+                   for i in range(0, len(points), 3)])
+        text = chain(link_a=link("a", inertial() + collision('<mesh filename="ball.stl"/>')))
+        header, lines = self.convert_warned(text, "--hull-vertices", "12")
+        self.assertEqual(len(lines), 1)
+        found = re.fullmatch(r'urdf_to_ctga: warning: link "a": mesh "ball.stl": its convex hull has 162 vertices, '
+                             r"more than --hull-vertices 12: reduced to 12 of them, whose hull lies up to (\S+) m "
+                             r"inside the true hull", lines[0])
+        self.assertIsNotNone(found, lines[0])
+        depth = float(found.group(1))
+        [(body, kind, kept)] = shapes(header)
+        self.assertEqual((body, kind, len(kept)), (0, "hull", 12))
+        self.assertIn("convex_hull<T, 12>", header)
+        self.assertIn("--hull-vertices 12", header.splitlines()[1])
+        # the vertices kept are the mesh's (extreme points), and the depth lies between a lower bound (each
+        # point's height above the reduced hull's support plane along it) and an upper one (to its nearest kept vertex)
+        self.assertTrue(all(any(math.dist(k, p) == 0 for p in points) for k in kept))
+        lower = max(math.hypot(*p) - max(sum(a * b for a, b in zip(k, p)) for k in kept) for p in points)
+        upper = max(min(math.dist(p, k) for k in kept) for p in points)
+        self.assertGreater(lower, 0.05)
+        self.assertTrue(lower * (1 - 5e-3) <= depth <= upper * (1 + 5e-3), (lower, depth, upper))
+        # within the default capacity (32 < 162): 32 vertices; a capacity above the hull's: all of them, no warning
+        header, _ = self.convert_warned(text)
+        self.assertEqual(len(shapes(header)[0][2]), 32)
+        header = self.convert(text, "--hull-vertices", "200")
+        self.assertEqual(shapes(header)[0][2], sorted(list(p) for p in points))
+        for bad in ("3", "8193", "x"):
+            self.assert_error(text, f"--hull-vertices {bad}", "4 to 8192", args=("--hull-vertices", bad))
+
+    def test_collision_meshes_left_out(self):
+        stl_binary(os.path.join(self.tmp.name, "cube.stl"), split_cube(0.125))
+        stl_binary(os.path.join(self.tmp.name, "flat.stl"), [((0, 0, 0), (1, 0, 0), (0, 1, 0)),
+                                                             ((1, 0, 0), (1, 1, 0), (0, 1, 0))])
+        self.write("junk.stl", "neither binary nor ASCII STL")
+        left_out = (collision('<mesh filename="arm.dae"/>') + collision('<mesh filename="missing.stl"/>') +
+                    collision('<mesh filename="junk.stl"/>') + collision('<mesh filename="flat.stl"/>') +
+                    collision('<capsule radius="0.1" length="0.2"/>'))
+        header, lines = self.convert_warned(chain(link_a=link("a", inertial() + left_out)))
+        self.assertEqual([l[len("urdf_to_ctga: warning: "):] for l in lines], [
+            'link "a": mesh "arm.dae": only STL meshes are read: left out',
+            'link "a": mesh "missing.stl": no such file (relative to the URDF\'s directory; package:// searched from '
+            "there upwards): left out",
+            'link "a": mesh "junk.stl": not an STL file (binary: its size is not 84 + 50 bytes per triangle; ASCII: '
+            "no 'solid'): left out",
+            'link "a": mesh "flat.stl": its points span no volume (fewer than four, or all on one plane): left out',
+            'link "a": <capsule> is not a URDF geometry (box, sphere, cylinder, mesh): left out'])
+        # no shape left: the header of the robot without <collision>, but for the warnings' comments
+        self.assertEqual([l for l in header.splitlines() if not l.startswith("// Warning: ")],
+                         self.convert(chain()).splitlines())
+        # --meshes omit: every mesh left out, one warning; the other shapes stay
+        text = chain(link_a=link("a", inertial() + collision('<mesh filename="cube.stl"/>') + left_out +
+                                 collision('<box size="1 1 1"/>')))
+        header, lines = self.convert_warned(text, "--meshes", "omit")
+        self.assertEqual(lines, ["urdf_to_ctga: warning: link \"a\": <capsule> is not a URDF geometry (box, sphere, "
+                                 "cylinder, mesh): left out",
+                                 "urdf_to_ctga: warning: --meshes omit: 5 <mesh> collision shape(s) left out"])
+        self.assertEqual(shapes(header), [(0, "box", [0.5, 0.5, 0.5])])
+        self.assertIn("--meshes omit", header.splitlines()[1])
+
+    def test_collision_sizes_refused(self):
+        for geometry, needle in (('<box size="0.1 0 0.1"/>', '<box size> 0.1 0.0 0.1: a size is not positive'),
+                                 ('<sphere radius="-0.1"/>', "<sphere radius> -0.1: a size is not positive"),
+                                 ('<cylinder radius="0.1" length="0"/>',
+                                  "<cylinder length> 0.0: a size is not positive"),
+                                 ('<mesh filename="cube.stl" scale="1 0 1"/>', "a zero scale flattens the mesh"),
+                                 ('<mesh/>', '<mesh> without filename="..."'),
+                                 ('<box size="1 1"/>', "is not three numbers"),
+                                 ("", "<geometry> must hold one shape"),
+                                 ('<box size="1 1 1"/><sphere radius="1"/>', "<geometry> must hold one shape")):
+            with self.subTest(geometry=geometry):
+                self.assert_error(chain(link_b=link("b", inertial() + collision(geometry))), 'link "b" <collision>: ',
+                                  needle)
+
+    def test_exclude_pair_and_srdf(self):
+        sphere = collision('<sphere radius="0.05"/>')
+        text = robot(link("base", sphere), joint("ja", "revolute", "base", "a"), link("a", inertial() + sphere),
+                     joint("jb", "revolute", "a", "b"), link("b", inertial() + sphere),
+                     joint("jc", "fixed", "b", "c"), link("c", sphere),
+                     joint("jd", "revolute", "a", "d"), link("d", inertial() + sphere))
+        srdf = self.write("robot.srdf", '<robot name="test"><disable_collisions link1="d" link2="b" reason="Never"/>'
+                                        '<disable_collisions link1="c" link2="a" reason="Adjacent"/>'
+                                        '<disable_collisions link1="base" link2="a" reason="Adjacent"/></robot>')
+        header, _ = self.convert_warned(text, "--exclude-pair", "a,c", "--exclude-pair", "b,c", "--srdf", srdf)
+        # bodies a 0, b 1 (c merged into it), d 2: (a, c) is (0, 1), (b, c) one body, (d, b) (1, 2), (c, a) (0, 1)
+        # again; the world's base is in no pair of bodies
+        self.assertEqual(excluded(header), [(0, 1), (1, 2)])
+        self.assertIn('{0, 1},  // links "a", "c" (--exclude-pair a,c)', header)
+        self.assertIn('{1, 2},  // links "d", "b" (--srdf robot.srdf)', header)
+        self.assertIn("if (const auto e = g.exclude(p[0], p[1]); e != ctga::error_code::none) return {{}, e};", header)
+        self.assertIn("--exclude-pair a,c --exclude-pair b,c --srdf robot.srdf", header.splitlines()[1])
+        # names the URDF does not have, malformed input
+        self.assert_error(text, '--exclude-pair a,zz: no link named "zz"', args=("--exclude-pair", "a,zz"))
+        self.assert_error(text, "--exclude-pair a: expected LINK_A,LINK_B", args=("--exclude-pair", "a"))
+        self.write("bad.srdf", '<robot><disable_collisions link1="a" link2="e"/></robot>')
+        self.assert_error(text, '--srdf bad.srdf: no link named "e"', args=("--srdf", os.path.join(self.tmp.name,
+                                                                                                    "bad.srdf")))
+        self.write("broken.srdf", "<robot><disable_collisions link1=")
+        self.assert_error(text, "broken.srdf: not well-formed XML", args=("--srdf", os.path.join(self.tmp.name,
+                                                                                                 "broken.srdf")))
+
     # ---- fixtures --------------------------------------------------------------------------------
 
     def fixture_header(self, name, *args, warnings=0):
-        rc, header, err = self.run_script(fixture(name), *args)
+        rc, header, err = self.run_script(None, *args, source=os.path.join(DATA, name))
         self.assertEqual(rc, 0, err)
         self.assertEqual(len(err.splitlines()), warnings, err)
         return header, err
@@ -1302,6 +1577,19 @@ class Converter(unittest.TestCase):
         self.assertEqual(names(header, "joint_names")[0], "trunk")
         header, _ = self.fixture_header("quadruped.urdf", "--floating-base", "--keep-fixed")
         self.assertEqual(self.counts(header), (17, 17, 18))
+
+    def test_fixture_quadruped_collisions(self):
+        header, _ = self.fixture_header("quadruped.urdf", "--floating-base")
+        hip_cover = sorted([x, y, z] for x in (-0.03125, 0.03125) for y in (0.0, 0.046875)
+                           for z in (-0.015625, 0.015625))
+        self.assertEqual(collision_kinds(header), ["sphere<T", "box<T", "convex_hull<T, 8"])
+        self.assertEqual(names(header, "collision_links"),
+                         ["trunk", "FL_hip", "FL_foot", "FR_foot", "RL_foot", "RR_foot"])
+        # the trunk's box on body 0, meshes/hip_cover.stl's hull on FL_hip's body, the feet on their calves'
+        self.assertEqual(shapes(header), [(0, "box", [0.25, 0.1, 0.05]), (1, "hull", hip_cover)] +
+                         [(b, "sphere", [0.02]) for b in (3, 6, 9, 12)])
+        for k in range(6):
+            self.assertEqual(shape_motor(header, k), ([0.0, 0.0, -0.2 if k >= 2 else 0.0], 0.0, [0.0, 0.0, 1.0]))
 
     def test_stdout(self):
         path = os.path.join(self.tmp.name, "r.urdf")

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """URDF -> C++: a robot's joint tree as a ctga::chains tree type and a function building its
-parameters (a ctga::chains::model), in one header.
+parameters (a ctga::chains::model), its joint limits and its collision geometry, in one header.
 
     python3 tools/urdf_to_ctga.py robot.urdf --name arm7 -o arm7.hpp
     python3 tools/urdf_to_ctga.py dog.urdf --name dog --floating-base --gravity 0 0 -9.81
@@ -16,6 +16,14 @@ The header declares, in namespace NAME (or --namespace):
     constexpr ctga::checked<ctga::chains::model<tree, T>> make_model() noexcept;
     template <class T = double>
     constexpr ctga::checked<ctga::chains::joint_limits<tree, T>> make_limits() noexcept;
+    // and, when the robot has collision shapes (K of them; below):
+    template <class T>
+    using collision_shape = ctga::collision::shape<...>;  // the kinds present: sphere, box, cylinder, convex_hull
+    inline constexpr std::size_t collision_count = K;
+    inline constexpr std::array<std::string_view, collision_count> collision_links{...};  // each shape's link
+    template <class T = double>
+    constexpr ctga::checked<ctga::constrained::robot_geometry<tree, collision_shape<T>, T, collision_count>>
+    make_geometry() noexcept;
 
 How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
   * Bodies. A body is a link on a moving joint (revolute, continuous, prismatic, floating, planar;
@@ -134,18 +142,50 @@ How URDF maps onto ctga::chains (include/ctga/chains/tree.hpp, joints.hpp):
     limits are read): lower > upper (revolute, prismatic), a negative velocity, effort, damping or
     friction, a malformed number, two <limit> or <dynamics>. (Refusing lower > upper, rather than
     dropping the bounds with a warning: the numbers are wrong, and check_limits would refuse them.)
-<safety_controller>, <calibration>, visuals, collisions, transmissions and Gazebo extensions are
-ignored. Anything that cannot be represented (a joint type outside the URDF spec, a graph that is
-not a tree, a massless moving subtree under --massless refuse) is an error: exit status 1 and a
-message naming the element on stderr; no header is written.
+  * Collision geometry. Every link's <collision> elements (<origin xyz rpy> optional, as a joint's)
+    become make_geometry's shapes, link by link in frame order (depth first), a link's in document
+    order; collision_links names each one's link. <sphere radius> -> collision::sphere<T>; <box
+    size="x y z"> -> box<T> of half extents x/2, y/2, z/2; <cylinder radius length> ->
+    cylinder<T> of half height length/2 (URDF's axis is its frame's z, as ctga's: no turn);
+    <mesh filename scale> -> the convex hull of an STL file's vertices (binary or ASCII; filename
+    relative to the URDF's directory, package://PKG/REST found as PKG/REST in the URDF's directory
+    or the nearest of its parents that has it, file://PATH), scaled (a negative scale mirrors),
+    as convex_hull<T, N> built by make_hull from its vertex list, N the most vertices of the hulls.
+    The hull is exact (quickhull with exact orientation tests: the doubles as integers), its vertices
+    the corners (points within a face or on an edge dropped, duplicates merged); a hull of more
+    corners than --hull-vertices N (default 32; 4 to 8192, convex_hull's bound) is reduced to N of
+    them (grown from its extreme four by the corner farthest outside, until N), with a warning
+    stating the largest distance the reduced hull lies inside the true one (at a corner left out).
+    Other mesh formats (.dae, .obj, ...), a missing or unreadable file, a mesh spanning no volume
+    and a geometry URDF does not define (<capsule>) are warnings naming the link and the file, the
+    element left out; --meshes omit leaves every mesh out (one warning counting them). Each shape
+    is on its link's body at the link's placement there (a merged link's composed fixed origins,
+    those of its frame) followed by the <origin>; a link in the world (a fixed base's root and the
+    links merged into it) has its shapes left out with a warning (static surroundings are the
+    caller's constrained::static_shape list). make_geometry<T>() makes each shape with ctga's
+    checked constructor (make_sphere, make_box, make_cylinder, make_hull), attaches it
+    (robot_geometry::attach: body, placement as a motor_map) and returns the first error. Errors
+    naming the link: a radius, length or box size that is not positive, a zero mesh scale, a
+    <geometry> without exactly one shape, a <mesh> without filename. --exclude-pair LINK_A,LINK_B
+    (repeatable) and --srdf FILE (its <disable_collisions link1 link2>) add exclude(body a, body
+    b) for the links' bodies, each pair of bodies once; a pair on one body (robot_geometry never
+    tests a body against itself) or with a link in the world is dropped; a link the URDF does not
+    have is an error. A robot without shapes gets none of this: the header is the same as without
+    <collision> (only the warnings' comments added).
+<safety_controller>, <calibration>, visuals, transmissions and Gazebo extensions are ignored.
+Anything that cannot be represented (a joint type outside the URDF spec, a graph that is not a
+tree, a massless moving subtree under --massless refuse) is an error: exit status 1 and a message
+naming the element on stderr; no header is written.
 
 Standard library only.
 """
 
 import argparse
+import heapq
 import math
 import os
 import re
+import struct
 import sys
 import xml.etree.ElementTree as ET
 
@@ -473,9 +513,21 @@ class Inertial:
 
 
 class Link:
-    def __init__(self, name, inertial):
+    def __init__(self, name, inertial, collisions=()):
         self.name = name
         self.inertial = inertial  # Inertial or None (massless)
+        self.collisions = list(collisions)  # [Collision] in document order
+
+
+class Collision:
+    """A link's <collision>: its geometry as written (sizes checked positive) and its <origin>."""
+
+    def __init__(self, kind, size, origin, filename=None):
+        self.kind = kind          # sphere | box | cylinder | mesh | another tag (not URDF's: left out, a warning)
+        self.size = size          # sphere [radius]; box [x, y, z] (full lengths); cylinder [radius, length];
+        #                           mesh: its scale [sx, sy, sz]
+        self.origin = origin      # Pose in the link frame
+        self.filename = filename  # a mesh's filename as written
 
 
 class Mimic:
@@ -527,6 +579,12 @@ def _origin(elem, where):
             parse_vector(o.get("rpy"), f"{where}: <origin rpy>", (0.0, 0.0, 0.0)))
 
 
+def _rpy_texts(elem):
+    """The <origin rpy> attribute's three words as written (None: absent), for quarter_turns."""
+    o = elem.find("origin")
+    return o.get("rpy").split() if o is not None and o.get("rpy") is not None else None
+
+
 def _parse_inertial(link_elem, where):
     """The link's Inertial, or None without <inertial> (massless). The numbers are checked here
     (malformed, non-finite, negative mass: errors); the physics is checked per body later."""
@@ -553,6 +611,45 @@ def _parse_inertial(link_elem, where):
     if rpy != [0.0, 0.0, 0.0]:
         tensor = rotate_tensor(rpy_matrix(rpy), tensor)
     return Inertial(mass, xyz, tensor)
+
+
+# The sizes of URDF's shapes: attributes (box: three numbers), each number positive.
+SHAPE_SIZES = {"sphere": ("radius",), "box": ("size",), "cylinder": ("radius", "length")}
+
+
+def _parse_collisions(link_elem, where):
+    """The link's <collision> elements: sizes checked positive (errors naming the link), a mesh's
+    scale checked non-zero (a negative scale mirrors it); a geometry URDF does not define is kept by
+    its tag (left out later, with a warning)."""
+    out = []
+    for ce in link_elem.findall("collision"):
+        w = f"{where} <collision>"
+        xyz, rpy = _origin(ce, w)
+        origin = Pose.origin(xyz, rpy, _rpy_texts(ce))
+        ge = ce.find("geometry")
+        shapes = [] if ge is None else list(ge)
+        if len(shapes) != 1:
+            raise UrdfError(f"{w}: <geometry> must hold one shape (box, sphere, cylinder or mesh)")
+        g = shapes[0]
+        if g.tag in SHAPE_SIZES:
+            size = []
+            for k in SHAPE_SIZES[g.tag]:
+                what = f"{w}: <{g.tag} {k}>"
+                given = parse_vector(g.get(k), what) if k == "size" else [parse_number(g.get(k), what)]
+                if not all(x > 0 for x in given):
+                    raise UrdfError(f"{what} {words(given)}: a size is not positive")
+                size += given
+            out.append(Collision(g.tag, size, origin))
+        elif g.tag == "mesh":
+            if not g.get("filename"):
+                raise UrdfError(f'{w}: <mesh> without filename="..."')
+            scale = parse_vector(g.get("scale"), f"{w}: <mesh scale>", (1.0, 1.0, 1.0))
+            if 0.0 in scale:
+                raise UrdfError(f"{w}: <mesh scale> {words(scale)}: a zero scale flattens the mesh")
+            out.append(Collision("mesh", scale, origin, g.get("filename")))
+        else:
+            out.append(Collision(g.tag, None, origin))
+    return out
 
 
 LIMIT_KEYS = ("lower", "upper", "velocity", "effort")
@@ -616,7 +713,7 @@ def parse_urdf(path):
         if name in link_names:
             raise UrdfError(f"{where} is defined twice")
         link_names.add(name)
-        links.append(Link(name, _parse_inertial(le, where)))
+        links.append(Link(name, _parse_inertial(le, where), _parse_collisions(le, where)))
 
     joints, joint_names = [], set()
     for je in root.findall("joint"):
@@ -657,9 +754,8 @@ def parse_urdf(path):
             mimic = Mimic(master, 1.0 if mult is None else parse_number(mult, f"{where}: <mimic multiplier>"),
                           0.0 if off is None else parse_number(off, f"{where}: <mimic offset>"))
         limit, dynamics = _limits_and_dynamics(je, kind, where) if kind in ONE_DOF else (None, None)
-        o = je.find("origin")
-        rpy_texts = o.get("rpy").split() if o is not None and o.get("rpy") is not None else None
-        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis, mimic, limit, dynamics, rpy_texts))
+        joints.append(Joint(name, kind, ends["parent"], ends["child"], xyz, rpy, axis, mimic, limit, dynamics,
+                            _rpy_texts(je)))
     return root.get("name", ""), links, joints
 
 
@@ -757,13 +853,18 @@ class Options:
     """The loading options (the command line's), defaults as there."""
 
     def __init__(self, floating_base=False, keep_fixed=False, mimic="coupled", mimic_missing="refuse", strict=False,
-                 massless="refuse", locks=(), armatures=()):
+                 massless="refuse", locks=(), armatures=(), meshes="hull", hull_vertices=32, exclude_pairs=(),
+                 srdf=None):
         self.floating_base, self.keep_fixed, self.strict = floating_base, keep_fixed, strict
         self.mimic = mimic                  # coupled | independent
         self.mimic_missing = mimic_missing  # refuse | independent
         self.massless = massless            # "refuse" | "lock" | the armature (float) of --massless armature=VALUE
         self.locks = list(locks)            # [(joint, value or None)] as given
         self.armatures = list(armatures)    # [(joint, value)] as given
+        self.meshes = meshes                # hull | omit
+        self.hull_vertices = hull_vertices  # a mesh's hull's capacity (reduced beyond it)
+        self.exclude_pairs = list(exclude_pairs)  # [(link a, link b)] as given
+        self.srdf = srdf                    # the SRDF file's path, or None
 
 
 class Model:
@@ -776,6 +877,8 @@ class Model:
         self.locks = {}        # joint name -> Lock, in the order decided
         self.armatures = {}    # joint name -> (value, why)
         self.mimics = {}       # joint name -> Mimic: the <mimic> joints coupled to their master
+        self.shapes = []       # [Shape]: the collision geometry (collision_geometry)
+        self.excluded = []     # [(body a, body b, why)]: pairs never tested against each other (excluded_pairs)
 
 
 NO_MASS = "no mass in its subtree"
@@ -1142,6 +1245,331 @@ def _massless_option(failing, opts, locks, armatures, mimics):
             armatures[j.name] = (opts.massless, "--massless armature")
 
 
+# ---- collision geometry -------------------------------------------------------------------------
+
+
+def _exact(points):
+    """The points' coordinates as integers, all scaled by one power of two: exact (a double is an
+    integer times a power of two), so that the hull's orientation tests are exact."""
+    ratios = [[c.as_integer_ratio() for c in p] for p in points]
+    den = max(d for r in ratios for _, d in r)
+    return [tuple(n * (den // d) for n, d in r) for r in ratios]
+
+
+def _minus(a, b):
+    return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+
+def _square(v):
+    return dot(v, v)
+
+
+def _extreme_four(X):
+    """The starting tetrahedron's corners (as hull.hpp's): the lowest x (then y, z), the farthest
+    from it, the farthest from their line, the farthest from their plane; None if the points span no
+    volume."""
+    i0 = min(range(len(X)), key=lambda i: X[i])
+    i1 = max(range(len(X)), key=lambda i: _square(_minus(X[i], X[i0])))
+    e = _minus(X[i1], X[i0])
+    i2 = max(range(len(X)), key=lambda i: _square(cross(e, _minus(X[i], X[i0]))))
+    n = cross(e, _minus(X[i2], X[i0]))
+    i3 = max(range(len(X)), key=lambda i: abs(dot(n, _minus(X[i], X[i0]))))
+    return None if dot(n, _minus(X[i3], X[i0])) == 0 else (i0, i1, i2, i3)
+
+
+def convex_hull(points, budget=None):
+    """The convex hull of distinct points (float triples): (corners, triangles), the corners' indices
+    ascending, the triangles (i, j, k) counter-clockwise seen from outside; None if the points span
+    no volume. Quickhull (Barber, Dobkin and Huhdanpaa 1996) with exact orientation tests (_exact):
+    from the tetrahedron of _extreme_four, the point farthest above its triangle is added, over all
+    triangles, until no point is above any; with a budget, until the hull has `budget` vertices (a
+    vertex more at most per point added: it stops at `budget` exactly when the whole hull has more).
+    A corner is a vertex on three or more distinct planes of triangles (a point within a flat face or
+    a straight edge, kept by the triangulation, is on one or two)."""
+    if len(points) < 4:
+        return None
+    X = _exact(points)
+    start = _extreme_four(X)
+    if start is None:
+        return None
+    faces, plane, edge, outside, uses = {}, {}, {}, {}, [0] * len(X)
+    heap, alive, next_id = [], 0, 0
+
+    def above(f, i):  # exact: the height of point i over face f's plane, times |n| (> 0: strictly above)
+        n, d, _ = plane[f]
+        return dot(n, X[i]) - d
+
+    def add_face(a, b, c):
+        nonlocal alive, next_id
+        f, next_id = next_id, next_id + 1
+        n = cross(_minus(X[b], X[a]), _minus(X[c], X[a]))
+        faces[f], plane[f] = (a, b, c), (n, dot(n, X[a]), math.sqrt(_square(n)))
+        for u, v in ((a, b), (b, c), (c, a)):
+            edge[(u, v)] = f
+            alive += uses[u] == 0
+            uses[u] += 1
+        return f
+
+    def remove_face(f):
+        nonlocal alive
+        a, b, c = faces.pop(f)
+        for u, v in ((a, b), (b, c), (c, a)):
+            del edge[(u, v)]
+            uses[u] -= 1
+            alive -= uses[u] == 0
+
+    def assign(candidates, new):  # each point to the new face it is farthest above (none: inside)
+        for i in candidates:
+            best, height = None, 0.0
+            for f in new:
+                h = above(f, i)
+                if h > 0 and (best is None or h / plane[f][2] > height):
+                    best, height = f, h / plane[f][2]
+            if best is not None:
+                outside.setdefault(best, []).append((height, i))
+        for f in new:
+            if f in outside:
+                heapq.heappush(heap, (-max(outside[f])[0], f))
+
+    i0, i1, i2, i3 = start
+    new = []
+    for a, b, c, o in ((i0, i1, i2, i3), (i0, i3, i1, i2), (i1, i3, i2, i0), (i2, i3, i0, i1)):
+        if dot(cross(_minus(X[b], X[a]), _minus(X[c], X[a])), _minus(X[o], X[a])) > 0:  # o above: turned inwards
+            b, c = c, b
+        new.append(add_face(a, b, c))
+    assign([i for i in range(len(X)) if i not in start], new)
+    while heap and (budget is None or alive < budget):
+        _, f = heapq.heappop(heap)
+        if f not in faces:
+            continue
+        p = max(outside[f])[1]
+        visible, stack = {f}, [f]
+        while stack:  # the faces p is strictly above: a connected patch around f
+            a, b, c = faces[stack.pop()]
+            for u, v in ((a, b), (b, c), (c, a)):
+                g = edge[(v, u)]
+                if g not in visible and above(g, p) > 0:
+                    visible.add(g)
+                    stack.append(g)
+        horizon = [(u, v) for g in visible for u, v in zip(faces[g], faces[g][1:] + faces[g][:1])
+                   if edge[(v, u)] not in visible]
+        pending = [i for g in visible for _, i in outside.pop(g, ()) if i != p]
+        for g in visible:
+            remove_face(g)
+        assign(pending, [add_face(u, v, p) for u, v in horizon])
+    planes = {}
+    for f, (a, b, c) in faces.items():
+        n = plane[f][0]
+        g = math.gcd(*n)
+        for i in (a, b, c):
+            planes.setdefault(i, set()).add(tuple(x // g for x in n))
+    return sorted(i for i, s in planes.items() if len(s) >= 3), list(faces.values())
+
+
+def _triangle_distance(p, a, b, c):
+    """The distance from p to the triangle abc (Ericson, Real-Time Collision Detection, 5.1.5)."""
+    ab, ac, ap = _minus(b, a), _minus(c, a), _minus(p, a)
+    d1, d2 = dot(ab, ap), dot(ac, ap)
+    if d1 <= 0 and d2 <= 0:
+        q = a
+    else:
+        bp = _minus(p, b)
+        d3, d4 = dot(ab, bp), dot(ac, bp)
+        cp = _minus(p, c)
+        d5, d6 = dot(ab, cp), dot(ac, cp)
+        vc, vb, va = d1 * d4 - d3 * d2, d5 * d2 - d1 * d6, d3 * d6 - d5 * d4
+        if d3 >= 0 and d4 <= d3:
+            q = b
+        elif d6 >= 0 and d5 <= d6:
+            q = c
+        elif vc <= 0 and d1 >= 0 and d3 <= 0:
+            q = [a[k] + d1 / (d1 - d3) * ab[k] for k in range(3)]
+        elif vb <= 0 and d2 >= 0 and d6 <= 0:
+            q = [a[k] + d2 / (d2 - d6) * ac[k] for k in range(3)]
+        elif va <= 0 and d4 - d3 >= 0 and d5 - d6 >= 0:
+            w = (d4 - d3) / ((d4 - d3) + (d5 - d6))
+            q = [b[k] + w * (c[k] - b[k]) for k in range(3)]
+        else:
+            den = va + vb + vc
+            q = [a[k] + vb / den * ab[k] + vc / den * ac[k] for k in range(3)]
+    return math.sqrt(_square(_minus(p, q)))
+
+
+def hull_of_mesh(points, capacity):
+    """(vertices, corners of the whole hull, depth) of distinct points: the hull's corners, or when
+    there are more than `capacity`, `capacity` of them (the hull grown from its extreme four by the
+    farthest corner until it has `capacity`: convex_hull's budget), and the largest distance the
+    reduced hull lies inside the true one (0 when not reduced: at a corner left out, as the distance
+    to a convex set is greatest at a vertex). None if the points span no volume."""
+    whole = convex_hull(points)
+    if whole is None:
+        return None
+    corners = [points[i] for i in whole[0]]
+    if len(corners) <= capacity:
+        return corners, len(corners), 0.0
+    kept, triangles = convex_hull(corners, capacity)
+    # a point outside a convex polytope is nearest to one of the faces it is above
+    faces = [(cross(_minus(b, a), _minus(c, a)), a, b, c) for a, b, c in ([corners[k] for k in t] for t in triangles)]
+    depth = max(min((_triangle_distance(p, a, b, c) for n, a, b, c in faces if dot(n, _minus(p, a)) > 0), default=0.0)
+                for p in (corners[i] for i in set(range(len(corners))) - set(kept)))
+    return [corners[i] for i in kept], len(corners), depth
+
+
+class MeshError(Exception):
+    """A mesh that cannot be read (left out with a warning)."""
+
+
+def read_stl(path):
+    """The vertices of an STL file's triangles, binary (its size 84 + 50 per triangle) or ASCII
+    ("solid ... vertex x y z ..."), in file order."""
+    with open(path, "rb") as f:
+        data = f.read()
+    if len(data) >= 84 and len(data) == 84 + 50 * struct.unpack_from("<I", data, 80)[0]:
+        points = [r[3 + 3 * k:6 + 3 * k] for r in struct.iter_unpack("<12fH", data[84:]) for k in range(3)]
+    elif data.lstrip().startswith(b"solid"):
+        points = []
+        for v in re.findall(rb"\bvertex\s+(\S+)\s+(\S+)\s+(\S+)", data):
+            try:
+                points.append(tuple(float(x) for x in v))
+            except ValueError:
+                raise MeshError(f"malformed ASCII STL vertex {b' '.join(v).decode('ascii', 'replace')!r}") from None
+    else:
+        raise MeshError("not an STL file (binary: its size is not 84 + 50 bytes per triangle; ASCII: no 'solid')")
+    if not all(math.isfinite(x) for p in points for x in p):
+        raise MeshError("non-finite vertex coordinates")
+    return points
+
+
+def resolve_mesh(filename, urdf_dir):
+    """The file a <mesh filename> names, or None: package://PKG/REST is PKG/REST in the URDF's
+    directory or the nearest of its parents that has it; file://PATH is PATH; a relative path is
+    relative to the URDF's directory."""
+    if filename.startswith("package://"):
+        rest, d = filename[len("package://"):], os.path.abspath(urdf_dir)
+        while not os.path.isfile(os.path.join(d, rest)):
+            if os.path.dirname(d) == d:
+                return None
+            d = os.path.dirname(d)
+        return os.path.join(d, rest)
+    path = os.path.join(urdf_dir, filename[len("file://"):] if filename.startswith("file://") else filename)
+    return path if os.path.isfile(path) else None
+
+
+class Shape:
+    """A collision shape on a body: kind (sphere, box, cylinder, hull: the variant's order), its
+    numbers (radius; half extents; radius and half height; the hull's vertices), what the URDF said
+    (for a comment), its URDF link, body and placement in the body's frame."""
+
+    def __init__(self, kind, numbers, source, link, body, placement):
+        self.kind, self.numbers, self.source = kind, numbers, source
+        self.link, self.body, self.placement = link, body, placement
+
+
+SHAPE_ORDER = ("sphere", "box", "cylinder", "hull")
+
+
+def _shape(c, where, urdf_dir, opts, warnings):
+    """(kind, numbers, source) of a <collision>, or None (left out, with a warning)."""
+    if c.kind == "sphere":
+        return "sphere", c.size, f"sphere radius {c.size[0]!r}"
+    if c.kind == "box":  # ctga's box takes half extents
+        return "box", [x / 2 for x in c.size], f"box size {words(c.size)}"
+    if c.kind == "cylinder":  # URDF's axis is its frame's z, as ctga's; ctga's takes the half height
+        return "cylinder", [c.size[0], c.size[1] / 2], f"cylinder radius {c.size[0]!r} length {c.size[1]!r}"
+    if c.kind != "mesh":
+        warnings.append(f"{where}: <{c.kind}> is not a URDF geometry (box, sphere, cylinder, mesh): left out")
+        return None
+    what = f"{where}: mesh {cpp_string(c.filename)}"
+    if not c.filename.lower().endswith(".stl"):
+        warnings.append(f"{what}: only STL meshes are read: left out")
+        return None
+    path = resolve_mesh(c.filename, urdf_dir)
+    if path is None:
+        warnings.append(f"{what}: no such file (relative to the URDF's directory; package:// searched from there "
+                        "upwards): left out")
+        return None
+    try:
+        points = read_stl(path)
+    except (OSError, MeshError) as e:
+        warnings.append(f"{what}: {e.strerror if isinstance(e, OSError) else e}: left out")
+        return None
+    made = hull_of_mesh(list(dict.fromkeys(tuple(s * x for s, x in zip(c.size, p)) for p in points)),
+                        opts.hull_vertices)
+    if made is None:
+        warnings.append(f"{what}: its points span no volume (fewer than four, or all on one plane): left out")
+        return None
+    vertices, corners, depth = made
+    source = f"mesh {cpp_string(c.filename)}" + ("" if c.size == [1.0, 1.0, 1.0] else f" scale {words(c.size)}")
+    if corners > len(vertices):
+        warnings.append(f"{what}: its convex hull has {corners} vertices, more than --hull-vertices "
+                        f"{opts.hull_vertices}: reduced to {len(vertices)} of them, whose hull lies up to "
+                        f"{depth:.3g} m inside the true hull")
+        source += f": the convex hull of {len(vertices)} of its {corners} hull vertices"
+    else:
+        source += f": its convex hull, {corners} vertices"
+    return "hull", vertices, source
+
+
+def collision_geometry(model, links, urdf_path, opts):
+    """The robot's collision shapes (model.shapes), link by link in frame order (depth first, a
+    link's in document order), each on its link's body at the link's placement there followed by
+    the <collision>'s <origin>. A link in the world (fixed base) has its shapes left out, with a
+    warning; so have --meshes omit's meshes (one warning) and those that cannot be read."""
+    by_name = {l.name: l for l in links}
+    urdf_dir = os.path.dirname(os.path.abspath(urdf_path))
+    omitted = 0
+    for frame in model.frames:
+        collisions = by_name[frame.name].collisions
+        where = f'link "{frame.name}"'
+        if collisions and frame.body < 0:
+            model.warnings.append(f"{where} is fixed to the world: its {len(collisions)} <collision> shape(s) left "
+                                  "out (the world's shapes are constrained::static_shape, not the robot's)")
+            continue
+        for c in collisions:
+            if c.kind == "mesh" and opts.meshes == "omit":
+                omitted += 1
+                continue
+            made = _shape(c, where, urdf_dir, opts, model.warnings)
+            if made is not None:
+                model.shapes.append(Shape(*made, frame.name, frame.body, frame.pose.then(c.origin)))
+    if omitted:
+        model.warnings.append(f"--meshes omit: {omitted} <mesh> collision shape(s) left out")
+    pairs = [(a, b, f"--exclude-pair {a},{b}") for a, b in opts.exclude_pairs]
+    excluded_pairs(model, pairs + (read_srdf(opts.srdf) if opts.srdf else []))
+
+
+def excluded_pairs(model, pairs):
+    """model.excluded: [(body a, body b, why)] of the pairs of links [(link a, link b, why)], a pair
+    on one body or with a link in the world dropped (robot_geometry tests neither), each pair of
+    bodies once; a link the URDF does not have is an error naming `why`."""
+    body = {f.name: f.body for f in model.frames}
+    seen = set()
+    for a, b, why in pairs:
+        for link in (a, b):
+            if link not in body:
+                raise UrdfError(f'{why}: no link named "{link}"')
+        key = tuple(sorted((body[a], body[b])))
+        if key[0] >= 0 and key[0] != key[1] and key not in seen:
+            seen.add(key)
+            model.excluded.append((key[0], key[1], f'"{a}", "{b}" ({why})'))
+
+
+def read_srdf(path):
+    """The <disable_collisions link1 link2> pairs of an SRDF file: [(link1, link2, where)]."""
+    try:
+        root = ET.parse(path).getroot()
+    except ET.ParseError as e:
+        raise UrdfError(f"--srdf {path}: not well-formed XML: {e}") from None
+    except OSError as e:
+        raise UrdfError(f"--srdf {path}: {e.strerror}") from None
+    out = []
+    for e in root.iter("disable_collisions"):
+        if not e.get("link1") or not e.get("link2"):
+            raise UrdfError(f'--srdf {path}: <disable_collisions> without link1="..." and link2="..."')
+        out.append((e.get("link1"), e.get("link2"), f"--srdf {os.path.basename(path)}"))
+    return out
+
+
 # ---- C++ ----------------------------------------------------------------------------------------
 
 _IDENT = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
@@ -1217,6 +1645,10 @@ def option_words(name, namespace, gravity, opts):
     w += "".join(f" --lock {n}" + ("" if v is None else f"={v!r}") for n, v in opts.locks)
     w += "".join(f" --armature {n}={v!r}" for n, v in opts.armatures)
     w += " --strict" if opts.strict else ""
+    w += " --meshes omit" if opts.meshes != "hull" else ""
+    w += "" if opts.hull_vertices == 32 else f" --hull-vertices {opts.hull_vertices}"
+    w += "".join(f" --exclude-pair {a},{b}" for a, b in opts.exclude_pairs)
+    w += f" --srdf {os.path.basename(opts.srdf)}" if opts.srdf else ""
     return comment_text(w)
 
 
@@ -1271,15 +1703,24 @@ def generate(urdf_path, robot_name, model, name, namespace, gravity, opts):
         L.append("// Mass properties are built with ctga::mass_check::as_given (finite, m >= 0, checked here).")
     for w in model.warnings:
         L.append(f"// Warning: {comment_text(w)}")
-    L.append("// Joint limits and <dynamics>: make_limits<T>() (below). Ignored: <safety_controller>, <calibration>,")
-    L.append("// visuals, collisions, transmissions. Floating joints read 8 motor coefficients.")
+    kinds = [k for k in SHAPE_ORDER if any(s.kind == k for s in model.shapes)]
+    if kinds:
+        L.append("// Joint limits and <dynamics>: make_limits<T>(); <collision>: make_geometry<T>() (below). Ignored:")
+        L.append("// <safety_controller>, <calibration>, visuals, transmissions. Floating joints read 8 motor coefficients.")
+    else:
+        L.append("// Joint limits and <dynamics>: make_limits<T>() (below). Ignored: <safety_controller>, <calibration>,")
+        L.append("// visuals, collisions, transmissions. Floating joints read 8 motor coefficients.")
     L.append("#pragma once")
     L.append("")
     L.append("#include <array>")
     L.append("#include <cstddef>")
+    L.extend(["#include <span>"] if "hull" in kinds else [])
     L.append("#include <string_view>")
     L.append("")
     L.append("#include <ctga/ctga.hpp>")
+    L.extend(f"#include <ctga/collision/{SHAPE_HEADERS[k]}>" for k in kinds)
+    L.extend(["#include <ctga/collision/shape_set.hpp>", "#include <ctga/constrained/robot_geometry.hpp>"] if kinds
+             else [])
     L.append("")
     L.append(f"namespace {namespace} {{")
     L.append("")
@@ -1373,6 +1814,9 @@ def generate(urdf_path, robot_name, model, name, namespace, gravity, opts):
     L.append("")
     L.extend(limits_lines(model))
     L.append("")
+    if kinds:
+        L.extend(geometry_lines(model, kinds))
+        L.append("")
     L.append(f"}}  // namespace {namespace}")
     return "\n".join(L) + "\n"
 
@@ -1421,6 +1865,71 @@ def limits_lines(model):
     return L
 
 
+SHAPE_HEADERS = {"sphere": "sphere.hpp", "box": "box.hpp", "cylinder": "cylinder.hpp", "hull": "hull.hpp"}
+
+
+def geometry_lines(model, kinds):
+    """collision_shape<T> (the variant of the kinds present), collision_count, collision_links and
+    make_geometry<T>(): each shape made by ctga's checked constructor and attached to its body at its
+    placement (the first error returned), then the excluded pairs of bodies."""
+    shapes = model.shapes
+    capacity = max((len(s.numbers) for s in shapes if s.kind == "hull"), default=0)
+    cpp_kind = {"sphere": "ctga::collision::sphere<T>", "box": "ctga::collision::box<T>",
+                "cylinder": "ctga::collision::cylinder<T>", "hull": f"ctga::collision::convex_hull<T, {capacity}>"}
+    geometry = "ctga::constrained::robot_geometry<tree, collision_shape<T>, T, collision_count>"
+    L = ["// Collision geometry: the URDF's <collision> elements, link by link (depth first), each on its link's",
+         "// body at the link's placement there followed by the element's <origin>. A box takes half extents, a",
+         "// cylinder its radius and half height (its axis z, as URDF's); a mesh is the convex hull of its STL",
+         "// file's vertices (scaled). The shape kinds present, in ctga's variant:",
+         "template <class T>",
+         f"using collision_shape = ctga::collision::shape<{', '.join(cpp_kind[k] for k in kinds)}>;",
+         f"inline constexpr std::size_t collision_count = {len(shapes)};",
+         "// The URDF link each shape comes from",
+         "inline constexpr std::array<std::string_view, collision_count> collision_links{"]
+    L.extend(f"    {cpp_string(s.link)}," for s in shapes)
+    L += ["};",
+          "",
+          "// The shapes on their bodies; an error (ctga::error_code) if a size or a hull is rejected by ctga's",
+          "// checks.",
+          "template <class T = double>",
+          f"constexpr ctga::checked<{geometry}> make_geometry() noexcept {{",
+          f"    {geometry} g;",
+          "    // each shape's placement in its body: translation (x, y, z), then rotation angle and unit axis",
+          "    const T placements[collision_count][7] = {"]
+    for k, s in enumerate(shapes):
+        u, theta = quat_axis_angle(s.placement.q)
+        L.append(f"        {{{vec(s.placement.p)}, {num(theta)}, {vec(u)}}},  // shape {k}: link {cpp_string(s.link)} "
+                 f"in body {s.body}")
+    L += ["    };",
+          "    // shape k, made by its checked constructor, attached to body b at its placement",
+          "    const auto place = [&](std::size_t k, int b, const auto& made) {",
+          "        if (!made) return made.error;",
+          "        const T* x = placements[k];",
+          "        const auto at = ctga::rigid_motion(ctga::make_translator(x[0], x[1], x[2]), "
+          "ctga::make_rotor(x[3], x[4], x[5], x[6]));",
+          "        return g.attach(b, *made, ctga::map_of(at));",
+          "    };"]
+    for k, s in enumerate(shapes):
+        L.append(f"    // shape {k}: link {cpp_string(s.link)}, {comment_text(s.source)}")
+        if s.kind == "hull":
+            L.append(f"    const std::array<ctga::vec3<T>, {len(s.numbers)}> hull_{k}{{{{")
+            L.extend(f"        {{{vec(p)}}}," for p in s.numbers)
+            L.append("    }};")
+            made = f"ctga::collision::make_hull<{capacity}, T>(std::span<const ctga::vec3<T>>(hull_{k}))"
+        else:
+            made = f"ctga::collision::make_{s.kind}({vec(s.numbers)})"
+        L.append(f"    if (const auto e = place({k}, {s.body}, {made}); e != ctga::error_code::none) return {{{{}}, e}};")
+    if model.excluded:
+        L.append("    // pairs of bodies never tested against each other (--exclude-pair, --srdf)")
+        L.append(f"    const int excluded[{len(model.excluded)}][2] = {{")
+        L.extend(f"        {{{a}, {b}}},  // links {comment_text(why)}" for a, b, why in model.excluded)
+        L += ["    };",
+              "    for (const auto& p : excluded)",
+              "        if (const auto e = g.exclude(p[0], p[1]); e != ctga::error_code::none) return {{}, e};"]
+    L += ["    return {g, ctga::error_code::none};", "}"]
+    return L
+
+
 # ---- command line -------------------------------------------------------------------------------
 
 
@@ -1446,6 +1955,26 @@ def _massless_choice(text):
             raise UrdfError(f"--massless {text}: the armature must be positive")
         return value
     raise UrdfError(f"--massless {text}: expected refuse, lock or armature=VALUE")
+
+
+def _hull_capacity(text):
+    if not re.match(r"^\d+$", text) or not 4 <= int(text) <= 8192:
+        raise UrdfError(f"--hull-vertices {text}: expected a whole number from 4 to 8192 (ctga::collision::convex_hull's "
+                        "capacity)")
+    return int(text)
+
+
+def _link_pair(text, link_names):
+    """LINK_A,LINK_B of --exclude-pair: split at the comma that leaves two link names (names may hold
+    commas); an error naming the link that is not one when there is one comma."""
+    splits = [(text[:i], text[i + 1:]) for i, c in enumerate(text) if c == ","]
+    for a, b in splits:
+        if a in link_names and b in link_names:
+            return a, b
+    if len(splits) == 1:
+        missing = next(n for n in splits[0] if n not in link_names)
+        raise UrdfError(f'--exclude-pair {text}: no link named "{missing}"')
+    raise UrdfError(f"--exclude-pair {text}: expected LINK_A,LINK_B, two links of the URDF")
 
 
 def main(argv=None):
@@ -1475,6 +2004,18 @@ def main(argv=None):
                          "floating joint: at its origin); its links stay frames; repeatable")
     ap.add_argument("--armature", action="append", default=[], metavar="JOINT=VALUE",
                     help="give the 1-dof JOINT the rotor inertia VALUE (kg m^2 or kg); repeatable")
+    ap.add_argument("--meshes", choices=("hull", "omit"), default="hull",
+                    help="<collision> meshes: hull (default: an STL file's convex hull; other formats are left out "
+                         "with a warning) or omit (every mesh left out, one warning)")
+    ap.add_argument("--hull-vertices", default="32", metavar="N",
+                    help="a mesh's convex hull keeps at most N vertices (4 to 8192, default 32); a hull with more is "
+                         "reduced to N of its extreme points, with a warning stating how far inside the true hull the "
+                         "reduced one lies")
+    ap.add_argument("--exclude-pair", action="append", default=[], metavar="LINK_A,LINK_B",
+                    help="the bodies of the two links are never tested against each other (make_geometry's "
+                         "robot_geometry::exclude); repeatable")
+    ap.add_argument("--srdf", metavar="FILE",
+                    help="an SRDF file: its <disable_collisions link1 link2> pairs are excluded as by --exclude-pair")
     ap.add_argument("--strict", action="store_true",
                     help="questionable inertia (not positive definite, triangle inequality) is an error, and "
                          "bodies with mass use ctga's physical check")
@@ -1490,8 +2031,11 @@ def main(argv=None):
         names = {j.name for j in joints}
         opts = Options(args.floating_base, args.keep_fixed, args.mimic, args.mimic_missing, args.strict, massless,
                        [_joint_value(t, "--lock", names, False) for t in args.lock],
-                       [_joint_value(t, "--armature", names, True) for t in args.armature])
+                       [_joint_value(t, "--armature", names, True) for t in args.armature],
+                       args.meshes, _hull_capacity(args.hull_vertices),
+                       [_link_pair(t, {l.name for l in links}) for t in args.exclude_pair], args.srdf)
         model = build_tree(links, joints, opts)
+        collision_geometry(model, links, args.urdf, opts)
         for w in model.warnings:
             print(f"{PROG}: warning: {w}", file=sys.stderr)
         text = generate(args.urdf, robot_name, model, args.name, namespace, gravity, opts)

@@ -29,6 +29,7 @@ int main(int argc, char** argv) {
     add_legged(table);
     add_constrained(table);
     add_humanoid_contact(table);
+    add_grasp_contact(table);
     add_humanoid(table);
     add_derivatives_arm7(table);
     add_derivatives_chain30(table);

@@ -5,7 +5,7 @@
 //   delassus_quadruped/ctga         the 12 × 12 Delassus operator J H⁻¹ Jᵀ (delassus)
 // beside the same run's aba_quadruped/ctga (the target: constrained forward dynamics ≤ 2× ABA);
 // and a step of the quadruped standing on the ground on four sphere feet under a PD controller
-// (standing_scenario, chains_mujoco.hpp: the same numbers for MuJoCo's row):
+// (contact_scenario, chains_mujoco.hpp: the same numbers for MuJoCo's row):
 //   contact_step_quadruped/ctga     contact_stepper::step (collision, limits, one solve, Euler)
 //   contact_step_quadruped/mujoco   mj_step (chains_mujoco.cpp)
 // each with its foot slip and sinking printed (stderr) after the same settling.
@@ -14,7 +14,7 @@
 
 #include <ctga/constrained/constrained_dynamics.hpp>
 
-#include "chains_standing.hpp"
+#include "chains_contact_steps.hpp"
 
 namespace bench::chains {
 namespace {
@@ -69,17 +69,16 @@ void add_kernel(std::vector<entry>& table, const std::string& name, const quadru
 // Solo 12 standing on its feet: hips 0, thighs 0.8, knees −1.6 (each foot 0.223 m under its hip),
 // dropped from 2 mm; spheres of 1.6 cm at the feet; h = 2 ms (MuJoCo's default step), μ = 1
 // (MuJoCo's default friction), kp 10 N m/rad, damping 0.1 N m s/rad.
-standing_scenario standing_quadruped() {
-    using namespace standing_detail;
-    standing_scenario s;
+contact_scenario standing_quadruped() {
+    contact_scenario s;
     s.label = "quadruped";
     for (const auto& b : solo12()) s.bodies.push_back(mujoco_detail::body_of(b));
     s.gravity = {0, 0, -9.81};
     const double r = 0.016;
-    s.base = base_qpos(base_motor(2 * 0.16 * std::cos(0.8) + r + 0.002, 0.0));
+    s.free_start = {contact_detail::free_qpos({0, 0, 2 * 0.16 * std::cos(0.8) + r + 0.002}, 0.0)};
     for (std::size_t leg = 0; leg < 4; ++leg) {
         s.target.insert(s.target.end(), {0.0, 0.8, -1.6});
-        s.feet.push_back({3 + 3 * leg, {0, leg % 2 == 0 ? 0.008 : -0.008, -0.16}, r});
+        s.shapes.push_back({3 + 3 * leg, {0, leg % 2 == 0 ? 0.008 : -0.008, -0.16}, r, {}});
     }
     s.h = 0.002, s.mu = 1.0, s.kp = 10.0, s.damping = 0.1;
     s.settle = 1000, s.measure = 500;
@@ -92,9 +91,8 @@ void add_constrained(std::vector<entry>& table) {
     static const quadruped_case c;
     add_kernel(table, "constrained_fd_quadruped/ctga", c, constrained_fd);
     add_kernel(table, "delassus_quadruped/ctga", c, delassus_of);
-    using namespace standing_detail;
-    const standing_scenario quadruped = standing_quadruped();
-    add_standing(table, quadruped,
-                 std::make_shared<standing_robot<legged_tree, 4, 8>>(quadruped, ctga_model<legged_tree>(solo12()), base_motor(quadruped.base[2], 0.0)));
+    using namespace contact_detail;
+    const contact_scenario s = standing_quadruped();
+    add_contact_step(table, s, std::make_shared<contact_robot<legged_tree, co::shape<co::sphere<double>>, 4, 8>>(s, ctga_model<legged_tree>(solo12())));
 }
 }  // namespace bench::chains

@@ -112,6 +112,7 @@ void add_chain30_crba_fk(std::vector<entry>& table);
 void add_legged(std::vector<entry>& table);  // and the quadruped
 void add_constrained(std::vector<entry>& table);  // the quadruped's feet held (constrained/)
 void add_humanoid_contact(std::vector<entry>& table);  // the humanoid lying on the ground (chains_humanoid_contact.cpp)
+void add_grasp_contact(std::vector<entry>& table);  // a gripper holding a cube (chains_grasp_contact.cpp)
 void add_humanoid(std::vector<entry>& table);
 void add_scaling(std::vector<entry>& table);  // CTGA_CHAINS_SCALING: chains of those sizes
 void add_derivatives_arm7(std::vector<entry>& table);  // the derivatives (chains_derivatives.hpp)

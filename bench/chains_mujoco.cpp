@@ -115,9 +115,9 @@ void principal_axes(const std::array<std::array<double, 3>, 3>& Ic, double diag[
     mju_mat2Quat(quat, R);
 }
 
-// A body and its subtree; with a scenario (contact_step rows), its joints' damping and its feet.
+// A body and its subtree; with a scenario (contact_step rows), its joints' damping and its shapes.
 void write_body(std::ostringstream& x, const std::vector<mujoco_body>& bodies, const std::vector<std::vector<std::size_t>>& children,
-                std::size_t i, int depth, const standing_scenario* s) {
+                std::size_t i, int depth, const contact_scenario* s) {
     const mujoco_body& b = bodies[i];
     const std::string pad(static_cast<std::size_t>(2 * depth), ' ');
     double diag[3], quat[4];
@@ -126,7 +126,7 @@ void write_body(std::ostringstream& x, const std::vector<mujoco_body>& bodies, c
     x << pad << "  <inertial pos=\"" << b.com[0] << ' ' << b.com[1] << ' ' << b.com[2] << "\" mass=\"" << b.mass << "\" quat=\""
       << quat[0] << ' ' << quat[1] << ' ' << quat[2] << ' ' << quat[3] << "\" diaginertia=\"" << diag[0] << ' ' << diag[1] << ' '
       << diag[2] << "\"/>\n";
-    const std::string passive = cat("damping=\"", s && b.joint == mujoco_joint::hinge ? s->damping : 0.0, "\" armature=\"0\" stiffness=\"0\" frictionloss=\"0\"");
+    const std::string passive = cat("damping=\"", s && (b.joint == mujoco_joint::hinge || b.joint == mujoco_joint::slide) ? s->damping : 0.0, "\" armature=\"0\" stiffness=\"0\" frictionloss=\"0\"");
     if (b.joint == mujoco_joint::free) {
         x << pad << "  <joint name=\"j" << i << "\" type=\"free\" " << passive << "/>\n";
     } else if (b.joint == mujoco_joint::hinge || b.joint == mujoco_joint::slide) {
@@ -134,18 +134,22 @@ void write_body(std::ostringstream& x, const std::vector<mujoco_body>& bodies, c
           << b.axis[0] << ' ' << b.axis[1] << ' ' << b.axis[2] << "\" pos=\"0 0 0\" ref=\"0\" limited=\"false\" " << passive << "/>\n";
     }
     if (s)
-        for (std::size_t f = 0; f < s->feet.size(); ++f)
-            if (s->feet[f].body == i)
-                x << pad << "  <geom name=\"foot" << f << "\" type=\"sphere\" size=\"" << s->feet[f].radius << "\" pos=\"" << s->feet[f].at[0]
-                  << ' ' << s->feet[f].at[1] << ' ' << s->feet[f].at[2] << "\" friction=\"" << s->mu << " 0.005 0.0001\"/>\n";
+        for (std::size_t f = 0; f < s->shapes.size(); ++f) {
+            const body_shape& g = s->shapes[f];
+            if (g.body != i) continue;
+            x << pad << "  <geom name=\"shape" << f << "\" pos=\"" << g.at[0] << ' ' << g.at[1] << ' ' << g.at[2] << "\" friction=\"" << s->mu
+              << " 0.005 0.0001\" ";
+            if (g.half[0] > 0) x << "type=\"box\" size=\"" << g.half[0] << ' ' << g.half[1] << ' ' << g.half[2] << "\"/>\n";
+            else x << "type=\"sphere\" size=\"" << g.radius << "\"/>\n";
+        }
     for (std::size_t k : children[i]) write_body(x, bodies, children, k, depth + 1, s);
     x << pad << "</body>\n";
 }
 
-// The model of a case (no contact, no passive forces: the chains rows), or of a standing scenario
+// The model of a case (no contact, no passive forces: the chains rows), or of a contact scenario
 // (MuJoCo's defaults but for the step and the Euler integrator: its joint damping implicit).
 std::string mjcf(const std::string& label, const std::vector<mujoco_body>& bodies, const std::array<double, 3>& gravity,
-                 const standing_scenario* s = nullptr) {
+                 const contact_scenario* s = nullptr) {
     std::vector<std::vector<std::size_t>> children(bodies.size());
     std::vector<std::size_t> roots;
     for (std::size_t i = 0; i < bodies.size(); ++i) (bodies[i].parent < 0 ? roots : children[static_cast<std::size_t>(bodies[i].parent)]).push_back(i);
@@ -433,79 +437,85 @@ void add_mujoco(std::vector<entry>& table, const mujoco_case& c) {
     if (!c.qdd_ref.empty()) add(table, cat("aba_", c.label, "/mujoco"), x, mujoco_chain_kernel_aba);
 }
 
-// ---- a robot standing (contact_step_<label>/mujoco) -------------------------------------------
+// ---- a robot that touches (contact_step_<label>/mujoco) -----------------------------------------
 
 namespace {
-struct standing_bridge {
+struct contact_bridge {
     mjModel* m = nullptr;
     mjData* d = nullptr;
-    std::vector<int> qadr, dadr;  // the hinges', in the scenario's order
+    std::vector<int> qadr, dadr;  // the hinges' and slides', in the scenario's order
     std::vector<double> target;
-    std::vector<int> feet;        // geom ids
-    std::vector<double> radius;
+    std::vector<int> shapes;      // geom ids
     double kp = 0;
-    standing_bridge() = default;
-    standing_bridge(const standing_bridge&) = delete;
-    standing_bridge& operator=(const standing_bridge&) = delete;
-    ~standing_bridge() {
+    contact_bridge() = default;
+    contact_bridge(const contact_bridge&) = delete;
+    contact_bridge& operator=(const contact_bridge&) = delete;
+    ~contact_bridge() {
         if (d) mj_deleteData(d);
         if (m) mj_deleteModel(m);
     }
 };
 // One step: the PD's torques as applied forces, then mj_step (collision, the constraint solve,
 // Euler with implicit damping).
-[[gnu::noinline]] void mujoco_contact_kernel_step(standing_bridge& x) {
+[[gnu::noinline]] void mujoco_contact_kernel_step(contact_bridge& x) {
     for (std::size_t j = 0; j < x.qadr.size(); ++j)
         x.d->qfrc_applied[x.dadr[j]] = x.kp * (x.target[j] - x.d->qpos[x.qadr[j]]);
     mj_step(x.m, x.d);
 }
 }  // namespace
 
-void add_mujoco_standing(std::vector<entry>& table, const standing_scenario& s) {
+void add_mujoco_contact(std::vector<entry>& table, const contact_scenario& s) {
     const std::string who = cat("ctga_chains_bench: mujoco contact_step_", s.label);
     const std::string xml = mjcf(s.label, s.bodies, s.gravity, &s);
-    keep_xml(cat("standing_", s.label), xml);
-    auto x = std::make_shared<standing_bridge>();
+    keep_xml(cat("contact_", s.label), xml);
+    auto x = std::make_shared<contact_bridge>();
     std::string error;
-    x->m = bench::load_mjcf(xml, cat("ctga_standing_", s.label, ".xml"), error);
+    x->m = bench::load_mjcf(xml, cat("ctga_contact_", s.label, ".xml"), error);
     if (!x->m) {
         std::fprintf(stderr, "%s: mj_loadXML: %s; the row is not registered\n", who.c_str(), error.c_str());
         return;
     }
     x->d = mj_makeData(x->m);
     x->kp = s.kp;
-    std::size_t hinge = 0;
+    std::size_t actuated = 0, free = 0;
     for (std::size_t i = 0; i < s.bodies.size(); ++i) {
         const int jnt = x->m->body_jntadr[mj_name2id(x->m, mjOBJ_BODY, cat("b", i).c_str())];
         if (s.bodies[i].joint == mujoco_joint::free) {
             const int a = x->m->jnt_qposadr[jnt];
-            for (std::size_t k = 0; k < 7; ++k) x->d->qpos[a + static_cast<int>(k)] = s.base[k];
-        } else if (s.bodies[i].joint == mujoco_joint::hinge) {
+            for (std::size_t k = 0; k < 7; ++k) x->d->qpos[a + static_cast<int>(k)] = s.free_start[free][k];
+            ++free;
+        } else if (s.bodies[i].joint == mujoco_joint::hinge || s.bodies[i].joint == mujoco_joint::slide) {
             x->qadr.push_back(x->m->jnt_qposadr[jnt]);
             x->dadr.push_back(x->m->jnt_dofadr[jnt]);
-            x->target.push_back(s.target[hinge]);
-            x->d->qpos[x->qadr.back()] = s.target[hinge++];
+            x->target.push_back(s.target[actuated]);
+            x->d->qpos[x->qadr.back()] = s.target[actuated++];
         }
     }
-    for (std::size_t f = 0; f < s.feet.size(); ++f) {
-        x->feet.push_back(mj_name2id(x->m, mjOBJ_GEOM, cat("foot", f).c_str()));
-        x->radius.push_back(s.feet[f].radius);
-    }
-    standing_figures fig;
+    for (std::size_t f = 0; f < s.shapes.size(); ++f) x->shapes.push_back(mj_name2id(x->m, mjOBJ_GEOM, cat("shape", f).c_str()));
+    const int held = s.held >= 0 ? mj_name2id(x->m, mjOBJ_BODY, cat("b", s.held).c_str()) : -1;
+    contact_figures fig;
     for (std::size_t n = 0; n < s.settle + s.measure; ++n) {
         mujoco_contact_kernel_step(*x);
         if (n < s.settle) continue;
-        mj_forward(x->m, x->d);  // (the velocities of the new state's geoms)
-        for (std::size_t f = 0; f < x->feet.size(); ++f) {
+        mj_forward(x->m, x->d);  // (the new state's positions, velocities and contacts)
+        if (held >= 0) {
             mjtNum v[6];
-            mj_objectVelocity(x->m, x->d, mjOBJ_GEOM, x->feet[f], v, 0);  // (ω, v) at the centre, world axes
-            const double r = x->radius[f];
+            mj_objectVelocity(x->m, x->d, mjOBJ_BODY, held, v, 0);
+            fig.slip = std::max(fig.slip, std::sqrt(v[3] * v[3] + v[4] * v[4] + v[5] * v[5]));
+            for (int c = 0; c < x->d->ncon; ++c) fig.sinking = std::max(fig.sinking, -x->d->contact[c].dist);
+            continue;
+        }
+        for (std::size_t f = 0; f < x->shapes.size(); ++f) {
+            mjtNum v[6];
+            mj_objectVelocity(x->m, x->d, mjOBJ_GEOM, x->shapes[f], v, 0);  // (ω, v) at the centre, world axes
+            const double r = s.shapes[f].radius;
             fig.slip = std::max(fig.slip, std::hypot(v[3] - r * v[1], v[4] + r * v[0]));
-            fig.sinking = std::max(fig.sinking, r - x->d->geom_xpos[3 * x->feet[f] + 2]);
+            fig.sinking = std::max(fig.sinking, r - x->d->geom_xpos[3 * x->shapes[f] + 2]);
         }
     }
-    std::fprintf(stderr, "%s (MuJoCo %s, h %g s, its defaults): after %zu steps, over %zu: slip %.1e m/s, sinking %.1e m\n", who.c_str(),
-                 mj_versionString(), s.h, s.settle, s.measure, fig.slip, fig.sinking);
+    std::fprintf(stderr, "%s (MuJoCo %s, h %g s, its defaults): after %zu steps, over %zu: %s %.1e m/s, %s %.1e m\n", who.c_str(),
+                 mj_versionString(), s.h, s.settle, s.measure, held >= 0 ? "the held body's speed" : "slip", fig.slip,
+                 held >= 0 ? "deepest overlap" : "sinking", fig.sinking);
     table.push_back({cat("contact_step_", s.label, "/mujoco"),
                      [x](benchmark::State& st) {
                          for (auto _ : st) mujoco_contact_kernel_step(*x);

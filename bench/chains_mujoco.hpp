@@ -57,28 +57,32 @@ struct mujoco_case {
     std::vector<std::vector<double>> tau_ref, H_ref, qdd_ref;
 };
 
-// A robot standing (or lying) on the ground (the plane z = 0) on spheres fixed to its bodies, under a PD
-// controller on its hinges, for contact_step_<label>/<engine> (chains_constrained.cpp): both engines
-// step it from the same start, τ_k = kp (target_k − q_k) on every hinge plus the joints' viscous
-// damping (implicit in both), Coulomb friction mu, step h. Measured after `settle` steps, over
-// `measure` more: a foot's slip (the speed along the ground of its sphere's material point at the
-// bottom) and its sinking (r − the sphere centre's height, when positive), the largest of each.
-struct foot_sphere {
+// A robot that touches, for contact_step_<label>/<engine> (chains_contact_steps.hpp): standing or
+// lying on the ground (the plane z = 0) on spheres, or holding a free body between its fingers.
+// Both engines step it from the same start: τ_k = kp (target_k − q_k) on every hinge and slide
+// plus the joints' viscous damping (implicit in both), Coulomb friction mu, step h. Measured after
+// `settle` steps, over `measure` more: without a held body, a sphere's slip (the speed along the
+// ground of its material point at the bottom) and its sinking (r − its centre's height, when
+// positive), the largest of each; with one, its speed (slip) and the deepest overlap of any
+// contact, as each engine reports it.
+struct body_shape {
     std::size_t body;
-    std::array<double, 3> at;  // the centre in the body's frame
-    double radius;
+    std::array<double, 3> at;    // the centre in the body's frame
+    double radius;               // a sphere, when half is zero
+    std::array<double, 3> half;  // a box's half extents, along the body's axes
 };
-struct standing_scenario {
+struct contact_scenario {
     std::string label;
-    std::vector<mujoco_body> bodies;  // body 0 floating, its joint frame at the origin
+    std::vector<mujoco_body> bodies;                // free joints on the world only
     std::array<double, 3> gravity;
-    std::array<double, 7> base;       // the base's start: position, unit quaternion (w, x, y, z)
-    std::vector<double> target;       // per hinge in body order: the start and the PD's target
-    std::vector<foot_sphere> feet;
+    std::vector<std::array<double, 7>> free_start;  // each free joint's start: position, quaternion (w, x, y, z)
+    std::vector<double> target;                     // per hinge or slide in body order: the start and the PD's target
+    std::vector<body_shape> shapes;
     double h, mu, kp, damping;
     std::size_t settle, measure;
+    int held = -1;                                  // the held body (grasp), or −1
 };
-struct standing_figures {
+struct contact_figures {
     double slip = 0, sinking = 0;
 };
 
@@ -87,11 +91,11 @@ inline constexpr bool mujoco_enabled = true;
 // Builds the MuJoCo model of c, checks it and registers its rows (chains_mujoco.cpp).
 void add_mujoco(std::vector<entry>& table, const mujoco_case& c);
 // The scenario in MuJoCo: its figures (stderr) and contact_step_<label>/mujoco.
-void add_mujoco_standing(std::vector<entry>& table, const standing_scenario& s);
+void add_mujoco_contact(std::vector<entry>& table, const contact_scenario& s);
 #else
 inline constexpr bool mujoco_enabled = false;
 inline void add_mujoco(std::vector<entry>&, const mujoco_case&) {}
-inline void add_mujoco_standing(std::vector<entry>&, const standing_scenario&) {}
+inline void add_mujoco_contact(std::vector<entry>&, const contact_scenario&) {}
 #endif
 
 }  // namespace bench::chains

@@ -12,7 +12,8 @@
 //     (the STL box's eight corners for the hull), each where its link's frame is (frame_pose);
 //   - a link resting on its joint limit under gravity: the limit's force is the gravity torque
 //     m g c cos q (statics), the overlap gone;
-//   - refused input: a limit with lower > upper, a stepper past its capacity.
+//   - refused input: a limit with lower > upper, a stepper past its capacity;
+//   - a start in deep penetration: pushed out no faster than the recovery speed, then at rest.
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -264,8 +265,55 @@ TEST_CASE("Limits and steps refuse bad input", "[constrained][contact_step]") {
     CHECK(report.error == ctga::error_code::capacity_exceeded);
     CHECK(q[0] == 0.0);
     CHECK(qd[0] == 0.5);
-    qd[0] = std::nan("");
     cn::contact_stepper<arm, double, 2> roomy;
+    roomy.limits.lower[0] = 0.2;  // lower > upper
+    roomy.limits.upper[0] = -0.2;
+    CHECK(roomy.step(m, q, qd, ch::joint_vector<arm>{}, none, std::span<const cn::static_shape<co::shape<co::half_space<double>>>>(nothing), {}).error ==
+          ctga::error_code::limits_reversed);
+    roomy.limits = ch::unlimited<arm, double>();
+    qd[0] = std::nan("");
     CHECK(roomy.step(m, q, qd, ch::joint_vector<arm>{}, none, std::span<const cn::static_shape<co::shape<co::half_space<double>>>>(nothing), {}).error ==
           ctga::error_code::non_finite);
+}
+
+namespace {
+using ball = ch::tree<ch::link<-1, ch::floating>>;
+}  // namespace
+
+TEST_CASE("A start in deep penetration is pushed out no faster than the recovery speed, and comes to rest", "[constrained][contact_step]") {
+    // a ball of 10 cm radius, its centre 5 cm under the ground's surface (half of it inside)
+    ch::model<ball> m;
+    m.link<0>() = *ch::make_link<ch::floating>(shifted(0, 0, 0), ctga::make_mass_properties(1.0, ctga::vec3<double>{}, ctga::mat3<double>{{{4e-3, 0, 0}, {0, 4e-3, 0}, {0, 0, 4e-3}}}));
+    cn::robot_geometry<ball, co::shape<co::sphere<double>>, double, 1> shape;
+    REQUIRE(shape.attach(0, co::sphere<double>{0.1}) == ctga::error_code::none);
+    const std::array<cn::static_shape<co::shape<co::half_space<double>>>, 1> ground{};
+    cn::contact_stepper<ball, double, 4> stepper;
+    cn::step_settings<double> s;  // h 1 ms, β 0.2, v_max 1 m/s
+    const ctga::motor<double> g = shifted(0, 0, 0.05);
+    ch::configuration<ball> q{};
+    for (std::size_t k = 0; k < 8; ++k) q[k] = g[k];
+    ch::joint_vector<ball> qd{};
+    double fastest = 0, first_depth = 0, highest = 0;
+    int out_after = -1;
+    for (int n = 0; n < 2000; ++n) {
+        const auto report = stepper.step(m, q, qd, ch::joint_vector<ball>{}, shape, std::span<const cn::static_shape<co::shape<co::half_space<double>>>>(ground), s);
+        REQUIRE(report.error == ctga::error_code::none);
+        if (n == 0) first_depth = report.penetration;
+        const double z = ctga::map_of(ctga::motor<double>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]}).t[2];
+        fastest = std::max(fastest, std::abs(qd[5]));  // the body's velocity along its own z (it does not turn)
+        highest = std::max(highest, z);
+        if (out_after < 0 && z > 0.1 - 1e-6) out_after = n;
+    }
+    const double z = ctga::map_of(ctga::motor<double>{q[0], q[1], q[2], q[3], q[4], q[5], q[6], q[7]}).t[2];
+    std::printf("deep start: depth %.3f m, out after %d steps, fastest %.3f m/s, highest centre %.4f m, at rest %.1e m/s, centre %.9f m\n",
+                first_depth, out_after, fastest, highest, std::abs(qd[5]), z);
+    CHECK(first_depth == Approx(0.05).epsilon(1e-12));
+    CHECK(fastest <= s.solve.recovery_speed + 9.81 * s.step + 1e-9);  // pushed out at v_max (plus a step of gravity)
+    CHECK(out_after > 0);
+    CHECK(out_after < 300);
+    // the push's speed is kept (the velocity level's recovery is not split from the velocity): the
+    // ball leaves the ground at most v_max fast and rises at most v_max² / 2g before it settles
+    CHECK(highest <= 0.1 + s.solve.recovery_speed * s.solve.recovery_speed / (2 * 9.81) + 1e-3);
+    CHECK(std::abs(qd[5]) < 1e-9);  // at rest on the ground in the end
+    CHECK(std::abs(z - 0.1) < 1e-6);
 }

@@ -82,7 +82,7 @@ constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tre
 }
 
 // The rows of a set's blocks (3 each, in block order), stored by dof: columns[k][r] = J(r, k),
-// zero off the rows' paths and past the last row; reach[k] has bit p set when dof k is on block
+// zero off the rows' paths (past the last row: unset); reach[k] has bit p set when dof k is on block
 // p's paths (delassus.hpp visits those blocks' rows only: a foot's rows reach its leg and the base).
 template <class Tree, class T, std::size_t Capacity>
 struct constraint_rows {
@@ -115,7 +115,9 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
     const auto world_of = [&](int body, const motor_map<T>& at) { return body < 0 ? at : compose(g.pose[static_cast<std::size_t>(body)], at); };
     const auto moving = [&](int body, const std::array<screw<T>, Tree::size>& X) { return body < 0 ? screw<T>{} : X[static_cast<std::size_t>(body)]; };
     R.count = 0;
-    for (auto& column : R.columns) column.fill(T(0));
+    const std::size_t rows = 3 * C.size();  // (the rows in use: only those are cleared)
+    for (auto& column : R.columns)
+        for (std::size_t r = 0; r < rows; ++r) column[r] = T(0);
     R.reach.fill(0);
     for (const constraint_block<T>& c : C.blocks()) {
         if (on_joint(c.kind)) {

@@ -18,8 +18,8 @@
 //      sweeps (at most the settings' budget) finished by Newton when they stop above the tolerance;
 //   4. q ← q ⊕ h q̇⁺ (configuration_space.hpp).
 // The report gives the solver's residual and sweeps, the counts and the deepest overlap; a step
-// whose blocks pass the capacity, or whose inputs or solve fail, leaves (q, q̇) as they were and
-// says why. The impulses over h are the forces (forces(): in each block's constraint axes).
+// whose blocks pass the capacity, whose limits have lower > upper (limits_reversed), or whose
+// inputs or solve fail, leaves (q, q̇) as they were and says why. The impulses over h are the forces (forces(): in each block's constraint axes).
 #pragma once
 
 #include <array>
@@ -44,7 +44,7 @@ struct step_settings {
     T mu = T(1);                 // Coulomb's coefficient of every contact
     T margin = T(5e-3);          // contacts found this far apart (m)
     T limit_margin = T(2e-2);    // a limit is a row within this of its bound (rad or m)
-    impulse_settings<T> solve{{{T(1e-9), 50}}, T(0.2)};  // tolerance on the impulses (N s), sweeps before Newton; the recovery β
+    impulse_settings<T> solve{{{T(1e-9), 50}}, T(0.2), T(1)};  // tolerance on the impulses (N s), sweeps before Newton; the recovery β
 };
 
 template <class T>
@@ -66,6 +66,8 @@ class contact_stepper {
                                   const chains::joint_vector<Tree, T>& tau, const robot_geometry<Tree, Shape, T, N>& geometry,
                                   std::span<const static_shape<WorldShape, T>> world, const step_settings<T>& settings) noexcept {
         step_report<T> report;
+        for (std::size_t b = 0; b < Tree::size; ++b)
+            if (Tree::nv_of[b] == 1 && limits.lower[Tree::v_offset[b]] > limits.upper[Tree::v_offset[b]]) return report.error = error_code::limits_reversed, report;
         blocks_.clear();
         count_ = 0;
         for (const constraint_block<T>& c : permanent.blocks()) keep(c, key(0, count_), report);

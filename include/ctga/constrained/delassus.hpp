@@ -27,8 +27,8 @@ namespace ctga::constrained {
 template <class Tree, class T, std::size_t Capacity>
 struct delassus_parts {
     static constexpr std::size_t max_rows = 3 * Capacity;
-    std::array<std::array<T, max_rows>, Tree::nv> Y;   // by dof: Y[k][r] = (J L⁻¹)(r, k)
-    std::array<std::array<T, max_rows>, max_rows> W;   // Y D⁻¹ Yᵀ (zero past the rows)
+    std::array<std::array<T, max_rows>, Tree::nv> Y;   // by dof: Y[k][r] = (J L⁻¹)(r, k), r < the rows' count
+    std::array<std::array<T, max_rows>, max_rows> W;   // Y D⁻¹ Yᵀ on the rows in use (the rest unset)
 };
 
 // The blocks of a mask, as bit indices, lowest first.
@@ -40,7 +40,9 @@ constexpr void each_block(std::uint64_t mask, F&& f) noexcept {
 template <class Tree, class T, std::size_t Capacity>
 constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chains::algorithm_detail::tree_factor<Tree, T>& f,
                              const constraint_rows<Tree, T, Capacity>& R) noexcept {
-    out.Y = R.columns;
+    const std::size_t n = R.count;  // (the rows in use: the rest of Y and W is left as it was)
+    for (std::size_t k = 0; k < Tree::nv; ++k)
+        for (std::size_t r = 0; r < n; ++r) out.Y[k][r] = R.columns[k][r];
     // the sweep: dof k's blocks reach every dof on k's path too
     chains::algorithm_detail::transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) {
         each_block(R.reach[k], [&](std::size_t p) {
@@ -48,7 +50,8 @@ constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chain
         });
     });
     // W: D_k⁻¹ y_k y_kᵀ on the 3 × 3 blocks of the pairs of blocks dof k reaches
-    for (auto& row : out.W) row.fill(T(0));
+    for (std::size_t r = 0; r < n; ++r)
+        for (std::size_t c = 0; c < n; ++c) out.W[r][c] = T(0);
     for (std::size_t k = 0; k < Tree::nv; ++k)
         each_block(R.reach[k], [&](std::size_t p) {
             std::array<T, 3> c;
@@ -83,7 +86,8 @@ template <class Tree, class T, std::size_t Capacity>
     delassus_parts<Tree, T, Capacity> parts;
     fill_delassus(parts, f, R);
     out.rows = R.count;
-    out.W = parts.W;
+    for (std::size_t r = 0; r < R.count; ++r)
+        for (std::size_t c = 0; c < R.count; ++c) out.W[r][c] = parts.W[r][c];
     return out;
 }
 

@@ -7,8 +7,9 @@
 // condition on u (the solver of constraints/, the tolerance the caller's):
 //   contact  K_μ ∋ r ⊥ ũ ∈ K*_μ (Coulomb's cone, De Saxcé's ũ), with b_n = φ/h while apart (φ > 0:
 //            the gap may close this step and no more, so the next state does not overlap to first
-//            order: a speculative contact) and b_n = β φ/h when overlapping (β of the depth removed
-//            per step: the recovery);
+//            order: a speculative contact) and b_n = max(β φ/h, −v_max) when overlapping (β of the
+//            depth removed per step, no faster than v_max: a start in deep penetration is pushed
+//            out at v_max, not thrown out in a step);
 //   limit    r ≥ 0 ⊥ u ≥ 0, b as a contact's normal;
 //   friction |r| ≤ h · bound, u = 0 while inside (a joint's dry friction sticks or slides);
 //   point, orientation  u = 0 with b = β φ/h.
@@ -42,6 +43,7 @@ template <class T>
 struct impulse_settings {
     constrained_settings<T> rows{};  // the solver's tolerance (on impulses, N s) and sweeps; the redundancy floor
     T recovery = T(0.2);             // β: the fraction of an overlap or a bilateral error removed per step
+    T recovery_speed = T(1);         // v_max (m/s or rad/s): the fastest an overlap is pushed out
 };
 
 template <class Tree, class T, std::size_t Capacity>
@@ -92,7 +94,8 @@ constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::c
         const bool normal = (kind == block_kind::contact || kind == block_kind::lower_limit || kind == block_kind::upper_limit) && r % 3 == 0;
         const bool held = kind == block_kind::point || kind == block_kind::orientation;
         const T phi = R.gap[r];
-        if (normal) qv[r] += (phi > T(0) ? phi : beta * phi) / h;
+        const T push = beta * phi / h, fastest = -settings.recovery_speed;
+        if (normal) qv[r] += phi > T(0) ? phi / h : (push > fastest ? push : fastest);
         else if (held) qv[r] += beta * phi / h;
     }
     for (std::size_t r = R.count; r < 3 * Capacity; ++r) out.impulse[r] = T(0);

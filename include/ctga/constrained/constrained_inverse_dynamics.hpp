@@ -10,7 +10,7 @@
 // |λ| ≤ bound on a joint friction's. Its dual, in y of the unactuated dofs' size,
 //     min_y  ½ ‖P_K(Aᵀ y)‖² − bᵀ y        (λ = P_K(Aᵀ y), the projection on the sets),
 // is convex and differentiable with gradient A P_K(Aᵀ y) − b: solved by semismooth Newton (the
-// generalized Jacobian of each projection, an Armijo search on the dual) until ‖A λ − b‖ is at
+// generalized Jacobian of each projection, a search on the dual or on ‖A λ − b‖) until ‖A λ − b‖ is at
 // most the settings' tolerance. Then τ = H q̈ + C − Jᵀ λ on the actuated dofs. A q̈ the sets
 // cannot produce (a base accelerating upwards off the ground, a foot that would have to pull)
 // leaves a residual: converged = false, the report says how far.
@@ -171,14 +171,16 @@ struct constrained_inverse_dynamics_t {
                 T slope = T(0);
                 for (std::size_t u = 0; u < U; ++u) slope += F[u] * step[u];
                 const std::array<T, U> from = y;
-                const T phi0 = phi;
+                const T phi0 = phi, residual0 = residual;
                 T t = T(1);
                 bool descended = false;
+                // a step is taken where the dual decreases (Armijo) or, near the solution where φ's
+                // decrease is below its rounding, where ‖F‖ does
                 for (int halving = 0; halving < 30 && !descended; ++halving, t /= T(2)) {
                     for (std::size_t u = 0; u < U; ++u) y[u] = from[u] + t * step[u];
                     const auto next = evaluate(y);
                     phi = next[0], residual = next[1];
-                    descended = phi <= phi0 + T(1e-4) * t * slope;
+                    descended = phi <= phi0 + T(1e-4) * t * slope || residual <= (T(1) - T(1e-4) * t) * residual0;
                 }
                 if (!descended) break;  // at rounding's floor: the residual is reported as it is
             }

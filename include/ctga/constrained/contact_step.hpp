@@ -44,7 +44,7 @@ struct step_settings {
     T mu = T(1);                 // Coulomb's coefficient of every contact
     T margin = T(5e-3);          // contacts found this far apart (m)
     T limit_margin = T(2e-2);    // a limit is a row within this of its bound (rad or m)
-    impulse_settings<T> solve{{{T(1e-9), 50}}, T(0.2), T(1)};  // tolerance on the impulses (N s), sweeps before Newton; the recovery β
+    impulse_settings<T> solve{{{T(1e-9), 50}}, T(0.2), T(1)};  // tolerance on the impulses (N s), sweeps before Newton; β; v_max (m/s)
 };
 
 template <class T>

@@ -151,53 +151,54 @@ CTGA_ALWAYS_INLINE constexpr void add_armature(const model<Tree, T>& m, joint_ma
 }
 
 // The local form (the header's first).
-template <class Tree, class T>
-constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
-    std::array<motor_map<T>, Tree::size> X;
-    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
-        using J = typename std::remove_cvref_t<decltype(b)>::joint;
-        const auto& L = b.link(m);
-        X[b.i] = J::motion(L.placement, L.joint, q.data() + b.q_src);
-    });
-    // (parameter by parameter: a whole body_inertia of packs, 640 bytes in 8 lanes, GCC copies
-    // with a call to memcpy, 11 % of the legged tree's CRBA in 8 lanes)
-    std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
-        return std::array<body_inertia<T>, Tree::size>{parameters_cast<T>(m.template link<I>().inertia)...};
-    }(std::make_index_sequence<Tree::size>{});
-    each_body_backward(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
-        using B = std::remove_cvref_t<decltype(b)>;
-        if constexpr (!B::root) Nc[b.p] = Nc[b.p] + transform<map_shape<typename B::joint>>(X[b.i], Nc[b.i]);
-    });
-    const auto links = body_links(m);
-    joint_matrix<Tree, T> H;
-    clear_for_fill<Tree>(H);
-    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
-        using J = typename std::remove_cvref_t<decltype(b)>::joint;
-        if constexpr (moves<J>)
-            [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
-                ([&] {  // column K of body b's dofs, from F = N^c_b S_bK
-                    const coscrew<T> F = momentum(Nc[b.i], J::template subspace<K, T>(b.link(m).joint));
-                    const std::size_t col = b.v_src + K;
-                    if constexpr (Tree::has_mimic) {
-                        const T w = dof_weight(b, m);
-                        fill_rows<true>(b, m, H, col, F, w);
-                        fill_ancestors(b, m, links, X, H, col, F, w);
-                    } else {
-                        fill_rows<false>(b, m, H, col, F);  // (Own matters to the mimic sums only)
-                        fill_ancestors(b, m, links, X, H, col, F);
-                    }
-                }(), ...);
-            }(std::make_index_sequence<is_mimic<J> ? 1 : J::nv>{});
-    });
-    add_armature(m, H);
-    return H;
+template <class Tree, class T, class Maps = maps_of_q>
+constexpr joint_matrix<Tree, T> crba_local(const model<Tree, T>& m, const configuration<Tree, T>& q, const Maps& maps = {}) noexcept {
+    if constexpr (std::is_same_v<Maps, maps_of_q>) {
+        joint_maps<Tree, T> X;
+        fill_joint_maps(X, m, q);
+        return crba_local(m, q, X);
+    } else {
+        const joint_maps<Tree, T>& X = maps;
+        // (parameter by parameter: a whole body_inertia of packs, 640 bytes in 8 lanes, GCC copies
+        // with a call to memcpy, 11 % of the legged tree's CRBA in 8 lanes)
+        std::array<body_inertia<T>, Tree::size> Nc = [&]<std::size_t... I>(std::index_sequence<I...>) {
+            return std::array<body_inertia<T>, Tree::size>{parameters_cast<T>(m.template link<I>().inertia)...};
+        }(std::make_index_sequence<Tree::size>{});
+        each_body_backward(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
+            using B = std::remove_cvref_t<decltype(b)>;
+            if constexpr (!B::root) Nc[b.p] = Nc[b.p] + transform<map_shape<typename B::joint>>(X[b.i], Nc[b.i]);
+        });
+        const auto links = body_links(m);
+        joint_matrix<Tree, T> H;
+        clear_for_fill<Tree>(H);
+        each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
+            using J = typename std::remove_cvref_t<decltype(b)>::joint;
+            if constexpr (moves<J>)
+                [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
+                    ([&] {  // column K of body b's dofs, from F = N^c_b S_bK
+                        const coscrew<T> F = momentum(Nc[b.i], J::template subspace<K, T>(b.link(m).joint));
+                        const std::size_t col = b.v_src + K;
+                        if constexpr (Tree::has_mimic) {
+                            const T w = dof_weight(b, m);
+                            fill_rows<true>(b, m, H, col, F, w);
+                            fill_ancestors(b, m, links, X, H, col, F, w);
+                        } else {
+                            fill_rows<false>(b, m, H, col, F);  // (Own matters to the mimic sums only)
+                            fill_ancestors(b, m, links, X, H, col, F);
+                        }
+                    }(), ...);
+                }(std::make_index_sequence<is_mimic<J> ? 1 : J::nv>{});
+        });
+        add_armature(m, H);
+        return H;
+    }
 }
 
 // The world form (the header's second).
-template <class Tree, class T>
-constexpr joint_matrix<Tree, T> crba_world(const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+template <class Tree, class T, class Maps = maps_of_q>
+constexpr joint_matrix<Tree, T> crba_world(const model<Tree, T>& m, const configuration<Tree, T>& q, const Maps& maps = {}) noexcept {
     world_geometry<Tree, T> g{uninitialized};
-    fill_world_geometry(g, m, q);
+    fill_world_geometry(g, m, q, maps);
     for (std::size_t i = Tree::size; i-- > 0;)  // the composites: children come after their parent
         if (const int p = Tree::parent[i]; p >= 0) g.N[static_cast<std::size_t>(p)] = g.N[static_cast<std::size_t>(p)] + g.N[i];
     using ancestors = branch_tables<Tree>;
@@ -248,13 +249,18 @@ struct crba_cost {
     // for 56,896 against 6.62 µs for 37,760), so it is taken below 0.8 × the local count
     static constexpr bool in_world = !Tree::has_mimic && 5 * world < 4 * local;
 };
+// H in the cheaper form, from q or the maps given (passes.hpp).
+template <class Tree, class T, class Maps = maps_of_q>
+constexpr joint_matrix<Tree, T> mass_matrix(const model<Tree, T>& m, const configuration<Tree, T>& q, const Maps& maps = {}) noexcept {
+    if constexpr (crba_cost<Tree>::in_world) return crba_world(m, q, maps);
+    else return crba_local(m, q, maps);
+}
 }  // namespace algorithm_detail
 
 struct crba_t {
     template <class Tree, class T>
     [[nodiscard]] constexpr joint_matrix<Tree, T> operator()(const model<Tree, T>& m, const configuration<Tree, T>& q) const noexcept {
-        if constexpr (algorithm_detail::crba_cost<Tree>::in_world) return algorithm_detail::crba_world(m, q);
-        else return algorithm_detail::crba_local(m, q);
+        return algorithm_detail::mass_matrix(m, q);
     }
 };
 inline constexpr algorithm<crba_t, "crba"> crba{};

@@ -41,14 +41,14 @@ struct world_geometry : world_poses<Tree, T> {
     explicit constexpr world_geometry(uninitialized_t) : world_poses<Tree, T>(uninitialized) {}
 };
 
-template <class Tree, class T>
-constexpr void fill_world_poses(world_poses<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
+template <class Tree, class T, class Maps = maps_of_q>
+constexpr void fill_world_poses(world_poses<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q, const Maps& maps = {}) noexcept {
     each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
         using B = std::remove_cvref_t<decltype(b)>;
         using J = typename B::joint;
         const std::size_t i = b.i;
         const auto& L = b.link(m);
-        const motor_map<T> X = J::motion(L.placement, L.joint, q.data() + b.q_src);
+        const motor_map<T> X = map_of(b, m, q, maps);
         if constexpr (B::root) g.pose[i] = X;
         else g.pose[i] = compose<map_shape<J>>(g.pose[b.p], X);
         [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {
@@ -56,9 +56,9 @@ constexpr void fill_world_poses(world_poses<Tree, T>& g, const model<Tree, T>& m
         }(std::make_index_sequence<J::nv>{});
     });
 }
-template <class Tree, class T>
-constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
-    fill_world_poses<Tree, T>(g, m, q);
+template <class Tree, class T, class Maps = maps_of_q>
+constexpr void fill_world_geometry(world_geometry<Tree, T>& g, const model<Tree, T>& m, const configuration<Tree, T>& q, const Maps& maps = {}) noexcept {
+    fill_world_poses<Tree, T>(g, m, q, maps);
     [&]<std::size_t... I>(std::index_sequence<I...>) { ((g.N[I] = m.template link<I>().inertia), ...); }(std::make_index_sequence<Tree::size>{});
     g.armature = armature_by_dof(m);
     for (std::size_t i = 0; i < Tree::size; ++i) g.N[i] = transform(g.pose[i], g.N[i]);

@@ -56,36 +56,39 @@ struct constrained_result {
 };
 
 namespace dynamics_detail {
-// W λ = −q for a positive semidefinite W of m rows (above); returns the rows kept.
+// W λ = −q for a positive semidefinite W of m rows (above); returns the rows kept. LDLᵀ by rows,
+// L kept both ways (Lt = Lᵀ) so that both substitutions run by columns, y_i −= L(i, k) y_k for all
+// i at once after y_k is final, on contiguous rows (measured, 12 rows: 466 ns with the
+// substitutions' sums over j < i, 364 ns so).
 template <class T, std::size_t N>
 constexpr std::size_t semidefinite_solve(const std::array<std::array<T, N>, N>& W, std::size_t m, const std::array<T, N>& q,
                                          const T& redundancy, std::array<T, N>& x) noexcept {
-    std::array<std::array<T, N>, N> L;
-    std::array<T, N> d;
+    std::array<std::array<T, N>, N> L, Lt;
+    std::array<T, N> d, v;
     T scale = T(0);
     for (std::size_t i = 0; i < m; ++i) scale = W[i][i] > scale ? W[i][i] : scale;
     const T floor = redundancy * scale;
     std::size_t kept = 0;
     for (std::size_t k = 0; k < m; ++k) {
+        for (std::size_t j = 0; j < k; ++j) v[j] = L[k][j] * d[j];
         T dk = W[k][k];
-        for (std::size_t j = 0; j < k; ++j) dk -= L[k][j] * L[k][j] * d[j];
+        for (std::size_t j = 0; j < k; ++j) dk -= L[k][j] * v[j];
         const bool keep = dk > floor;
         d[k] = keep ? dk : T(0);
         kept += keep;
+        const T inv = keep ? T(1) / dk : T(0);
         for (std::size_t i = k + 1; i < m; ++i) {
             T s = W[i][k];
-            for (std::size_t j = 0; j < k; ++j) s -= L[i][j] * L[k][j] * d[j];
-            L[i][k] = keep ? s / dk : T(0);
+            for (std::size_t j = 0; j < k; ++j) s -= L[i][j] * v[j];
+            L[i][k] = Lt[k][i] = keep ? s * inv : T(0);
         }
     }
-    for (std::size_t i = 0; i < m; ++i) {  // L y = −q
-        T y = -q[i];
-        for (std::size_t j = 0; j < i; ++j) y -= L[i][j] * x[j];
-        x[i] = y;
-    }
+    for (std::size_t i = 0; i < m; ++i) x[i] = -q[i];
+    for (std::size_t k = 0; k < m; ++k)  // L y = −q
+        for (std::size_t i = k + 1; i < m; ++i) x[i] -= Lt[k][i] * x[k];
     for (std::size_t i = 0; i < m; ++i) x[i] = d[i] > T(0) ? x[i] / d[i] : T(0);
-    for (std::size_t i = m; i-- > 0;)  // Lᵀ λ = D⁻¹ y
-        for (std::size_t j = i + 1; j < m; ++j) x[i] -= L[j][i] * x[j];
+    for (std::size_t k = m; k-- > 0;)  // Lᵀ λ = D⁻¹ y
+        for (std::size_t i = 0; i < k; ++i) x[i] -= L[k][i] * x[k];
     return kept;
 }
 
@@ -151,9 +154,10 @@ struct rows_problem {
 template <class Tree, class T, std::size_t Capacity>
 constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
                             const chains::joint_vector<Tree, T>& qd, const constraint_set<Tree, T, Capacity>& C,
-                            const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z) noexcept {
+                            const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z,
+                            const chains::algorithm_detail::joint_maps<Tree, T>& X) noexcept {
     tree_motion<Tree, T> g(uninitialized);
-    fill_tree_motion(g, m, q, qd);
+    fill_tree_motion(g, m, q, qd, X);
     fill_rows(x.R, g, C, q, qd);
     fill_delassus(x.P, f, x.R);
     rows_of(f, z, x.R, x.P, x.qv);
@@ -253,15 +257,17 @@ struct constrained_forward_dynamics_t {
         using namespace chains::algorithm_detail;
         constrained_result<Tree, T, Capacity> out;
         if (!dynamics_detail::finite_state(q, qd, tau)) return out.error = error_code::non_finite, out;
-        // H = Lᵀ D L; z = L⁻ᵀ (τ − C)
-        const tree_factor<Tree, T> f = factor_tree<Tree>(chains::crba(m, q));
+        // H = Lᵀ D L; z = L⁻ᵀ (τ − C); the joints' maps evaluated once for H, C and the rows
+        joint_maps<Tree, T> X;
+        fill_joint_maps(X, m, q);
+        const tree_factor<Tree, T> f = factor_tree<Tree>(mass_matrix(m, q, X));
         if (!f.positive_definite) return out.error = error_code::massless_subtree, out;
-        std::array<T, Tree::nv> z = chains::rnea(m, q, qd, chains::joint_vector<Tree, T>{});
+        std::array<T, Tree::nv> z = rnea(m, q, qd, chains::joint_vector<Tree, T>{}, static_cast<const chains::body_wrenches<Tree, T>*>(nullptr), X);
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = tau[k] - z[k];
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
         // the rows, W, and q = J H⁻¹ (τ − C) + J̇ q̇ − a_ref
         dynamics_detail::rows_problem<Tree, T, Capacity> x;
-        dynamics_detail::fill_problem(x, m, q, qd, C, f, z);
+        dynamics_detail::fill_problem(x, m, q, qd, C, f, z, X);
         auto& [R, P, qv] = x;
         const T w = settings.stabilization;
         for (std::size_t r = 0; r < R.count; ++r) {

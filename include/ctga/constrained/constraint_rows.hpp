@@ -65,10 +65,10 @@ struct tree_motion : chains::algorithm_detail::world_poses<Tree, T> {
     std::array<screw<T>, Tree::size> V, A;
     explicit constexpr tree_motion(uninitialized_t) : chains::algorithm_detail::world_poses<Tree, T>(uninitialized) {}
 };
-template <class Tree, class T>
+template <class Tree, class T, class Maps = chains::algorithm_detail::maps_of_q>
 constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
-                                const chains::joint_vector<Tree, T>& qd) noexcept {
-    chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q);
+                                const chains::joint_vector<Tree, T>& qd, const Maps& maps = {}) noexcept {
+    chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q, maps);
     for (std::size_t i = 0; i < Tree::size; ++i) {
         const int p = Tree::parent[i];
         const std::size_t o = Tree::v_offset[i], n = Tree::nv_of[i];

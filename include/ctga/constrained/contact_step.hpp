@@ -72,8 +72,10 @@ class contact_stepper {
         count_ = 0;
         for (const constraint_block<T>& c : permanent.blocks()) keep(c, key(0, count_), report);
         // 1. contacts
+        chains::algorithm_detail::joint_maps<Tree, T> X;  // (for the collision's poses and the dynamics)
+        chains::algorithm_detail::fill_joint_maps(X, m, q);
         chains::algorithm_detail::world_poses<Tree, T> g(uninitialized);
-        chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q);
+        chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q, X);
         const auto shapes = geometry.shapes();
         const auto pose_of = [&](const auto& s) { return compose(g.pose[static_cast<std::size_t>(s.body)], s.at); };
         const auto add_manifold = [&](const collision::manifold<T>& mf, int a, int b, std::uint64_t pair) {
@@ -117,7 +119,7 @@ class contact_stepper {
                 if (last_keys_[j] == keys_[i]) r = {last_[3 * j], last_[3 * j + 1], last_[3 * j + 2]};
             for (std::size_t a = 0; a < 3; ++a) result_.impulse[3 * i + a] = r[a];
         }
-        impulse_dynamics(m, q, qd, tau, blocks_, settings.step, limits.damping, settings.solve, result_, std::span<T>(scratch_));
+        impulse_dynamics(m, q, qd, tau, blocks_, settings.step, limits.damping, settings.solve, result_, std::span<T>(scratch_), &X);
         report.solver = result_.report;
         if (result_.error != error_code::none) return report.error = result_.error, report;
         last_count_ = count_;

@@ -58,33 +58,38 @@ struct impulse_result {
 // q̇⁺ and r over a step h (above); `out.impulse` holds the warm start on entry (zeros, or the last
 // step's impulses of the same blocks); with scratch of dynamics_detail::polish_scratch_size(Capacity)
 // numbers, a solve the sweeps leave unconverged is finished by Newton (constrained_dynamics.hpp's
-// solve_rows). Refused: non-finite inputs, h < 0 (non_finite), negative
-// damping (negative_limit), a massless subtree.
+// solve_rows). `maps`, when given, are the joints' maps at q (chains' fill_joint_maps: the
+// stepper's, computed for collision), else computed here. Refused: non-finite inputs, h < 0
+// (non_finite), negative damping (negative_limit), a massless subtree.
 template <class Tree, class T, std::size_t Capacity>
 constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd,
                                 const chains::joint_vector<Tree, T>& tau, const constraint_set<Tree, T, Capacity>& C, const T& h,
                                 const chains::joint_vector<Tree, T>& damping, const impulse_settings<T>& settings,
-                                impulse_result<Tree, T, Capacity>& out, std::span<T> scratch = {}) noexcept {
+                                impulse_result<Tree, T, Capacity>& out, std::span<T> scratch = {},
+                                const chains::algorithm_detail::joint_maps<Tree, T>* maps = nullptr) noexcept {
     static_assert(!Tree::has_mimic, "ctga::constrained: trees with mimic joints are not supported yet (their H is not the tree factor's)");
     using namespace chains::algorithm_detail;
     out.error = error_code::none;
     if (!dynamics_detail::finite_state(q, qd, tau, damping) || !is_finite(h) || h < T(0)) return void(out.error = error_code::non_finite);
     for (const T& b : damping)
         if (b < T(0)) return void(out.error = error_code::negative_limit);
+    joint_maps<Tree, T> own;
+    if (!maps) fill_joint_maps(own, m, q);
+    const joint_maps<Tree, T>& X = maps ? *maps : own;
     // H + hB = Lᵀ D L; z = L⁻ᵀ h (τ − C − B q̇)
-    tree_factor<Tree, T> f{chains::crba(m, q), {}, true};
+    tree_factor<Tree, T> f{mass_matrix(m, q, X), {}, true};
     for (std::size_t k = 0; k < Tree::nv; ++k) f.LD[k][k] += h * damping[k];
     factor_tree(f);
     if (!f.positive_definite) return void(out.error = error_code::massless_subtree);
     std::array<T, Tree::nv> z{};
     if (h > T(0)) {
-        z = chains::rnea(m, q, qd, chains::joint_vector<Tree, T>{});
+        z = rnea(m, q, qd, chains::joint_vector<Tree, T>{}, static_cast<const chains::body_wrenches<Tree, T>*>(nullptr), X);
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = h * (tau[k] - z[k] - damping[k] * qd[k]);
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
     }
     // the rows, W, and q = J q̇ + J (H + hB)⁻¹ h (τ − C − B q̇) + b
     dynamics_detail::rows_problem<Tree, T, Capacity> x;
-    dynamics_detail::fill_problem(x, m, q, qd, C, f, z);
+    dynamics_detail::fill_problem(x, m, q, qd, C, f, z, X);
     auto& [R, P, qv] = x;
     const T beta = settings.recovery;
     for (std::size_t r = 0; r < R.count; ++r) {

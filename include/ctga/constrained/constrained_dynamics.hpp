@@ -144,21 +144,22 @@ constexpr void rows_of(const chains::algorithm_detail::tree_factor<Tree, T>& f, 
 }
 
 // The rows at (q, q̇), W from the factor f, and q = J H⁻¹ b for z = L⁻ᵀ b (before the bias terms
-// each level adds): what both levels (forces here, impulses in impulse_dynamics.hpp) solve.
+// each level adds): what both levels (forces here, impulses in impulse_dynamics.hpp) solve; J̇ q̇
+// (Bias) for forces only.
 template <class Tree, class T, std::size_t Capacity>
 struct rows_problem {
     constraint_rows<Tree, T, Capacity> R;
     delassus_parts<Tree, T, Capacity> P;
     std::array<T, 3 * Capacity> qv;
 };
-template <class Tree, class T, std::size_t Capacity>
+template <bool Bias, class Tree, class T, std::size_t Capacity>
 constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
                             const chains::joint_vector<Tree, T>& qd, const constraint_set<Tree, T, Capacity>& C,
                             const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z,
                             const chains::algorithm_detail::joint_maps<Tree, T>& X) noexcept {
     tree_motion<Tree, T> g(uninitialized);
-    fill_tree_motion(g, m, q, qd, X);
-    fill_rows(x.R, g, C, q, qd);
+    fill_tree_motion<Bias>(g, m, q, qd, X);
+    fill_rows<Bias>(x.R, g, C, q, qd);
     fill_delassus(x.P, f, x.R);
     rows_of(f, z, x.R, x.P, x.qv);
 }
@@ -267,7 +268,7 @@ struct constrained_forward_dynamics_t {
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
         // the rows, W, and q = J H⁻¹ (τ − C) + J̇ q̇ − a_ref
         dynamics_detail::rows_problem<Tree, T, Capacity> x;
-        dynamics_detail::fill_problem(x, m, q, qd, C, f, z, X);
+        dynamics_detail::fill_problem<true>(x, m, q, qd, C, f, z, X);
         auto& [R, P, qv] = x;
         const T w = settings.stabilization;
         for (std::size_t r = 0; r < R.count; ++r) {

@@ -65,7 +65,8 @@ struct tree_motion : chains::algorithm_detail::world_poses<Tree, T> {
     std::array<screw<T>, Tree::size> V, A;
     explicit constexpr tree_motion(uninitialized_t) : chains::algorithm_detail::world_poses<Tree, T>(uninitialized) {}
 };
-template <class Tree, class T, class Maps = chains::algorithm_detail::maps_of_q>
+// (Bias false: the velocity level's rows, which need no J̇ q̇: A is not computed.)
+template <bool Bias = true, class Tree, class T, class Maps = chains::algorithm_detail::maps_of_q>
 constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
                                 const chains::joint_vector<Tree, T>& qd, const Maps& maps = {}) noexcept {
     chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q, maps);
@@ -74,10 +75,12 @@ constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tre
         const std::size_t o = Tree::v_offset[i], n = Tree::nv_of[i];
         screw<T> V = p < 0 ? screw<T>{} : g.V[static_cast<std::size_t>(p)];
         for (std::size_t k = o; k < o + n; ++k) V = V + g.S[k] * qd[k];
-        screw<T> A = p < 0 ? screw<T>{} : g.A[static_cast<std::size_t>(p)];
-        for (std::size_t k = o; k < o + n; ++k) A = A + bracket(V, g.S[k]) * qd[k];
         g.V[i] = V;
-        g.A[i] = A;
+        if constexpr (Bias) {
+            screw<T> A = p < 0 ? screw<T>{} : g.A[static_cast<std::size_t>(p)];
+            for (std::size_t k = o; k < o + n; ++k) A = A + bracket(V, g.S[k]) * qd[k];
+            g.A[i] = A;
+        }
     }
 }
 
@@ -108,7 +111,8 @@ template <class T>
 }
 }  // namespace rows_detail
 
-template <class Tree, class T, std::size_t Capacity>
+// (Bias false: without J̇ q̇, from a tree_motion filled without it.)
+template <bool Bias = true, class Tree, class T, std::size_t Capacity>
 constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motion<Tree, T>& g, const constraint_set<Tree, T, Capacity>& C,
                          const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd) noexcept {
     using P = rows_detail::paths<Tree>;
@@ -133,12 +137,16 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
         }
         const motor_map<T> WA = world_of(c.a, c.at_a), WB = world_of(c.b, c.at_b);
         const vec3<T>& x = WA.t;
-        const screw<T> VA = moving(c.a, g.V), VB = moving(c.b, g.V), AA = moving(c.a, g.A), AB = moving(c.b, g.A);
         const vec3<T> d = linear3::apply_transposed(WB.R, linear3::sub(WA.t, WB.t));
-        mat3<T> turn;  // R_Bᵀ R_A
-        for (std::size_t r = 0; r < 3; ++r)
-            for (std::size_t s = 0; s < 3; ++s) turn[r][s] = WB.R[0][r] * WA.R[0][s] + WB.R[1][r] * WA.R[1][s] + WB.R[2][r] * WA.R[2][s];
-        const vec3<T> tilt{(turn[2][1] - turn[1][2]) / T(2), (turn[0][2] - turn[2][0]) / T(2), (turn[1][0] - turn[0][1]) / T(2)};
+        screw<T> VA, VB, AA, AB;  // (Bias: the bodies' velocities and accelerations)
+        if constexpr (Bias) VA = moving(c.a, g.V), VB = moving(c.b, g.V), AA = moving(c.a, g.A), AB = moving(c.b, g.A);
+        vec3<T> tilt{};
+        if (c.kind == block_kind::orientation) {
+            mat3<T> turn;  // R_Bᵀ R_A
+            for (std::size_t r = 0; r < 3; ++r)
+                for (std::size_t s = 0; s < 3; ++s) turn[r][s] = WB.R[0][r] * WA.R[0][s] + WB.R[1][r] * WA.R[1][s] + WB.R[2][r] * WA.R[2][s];
+            tilt = {(turn[2][1] - turn[1][2]) / T(2), (turn[0][2] - turn[2][0]) / T(2), (turn[1][0] - turn[0][1]) / T(2)};
+        }
         for (std::size_t j = 0; j < 3; ++j) {
             const std::size_t axis = c.kind == block_kind::contact ? (j + 2) % 3 : j;  // contact: z, x, y
             const vec3<T> e{WB.R[0][axis], WB.R[1][axis], WB.R[2][axis]};
@@ -161,7 +169,11 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
             put(c.a, c.b, T(1));
             put(c.b, c.a, T(-1));
             R.rate[r] = rate;
-            R.bias[r] = pairing(l, AA) - pairing(l, AB) + (line ? rows_detail::turning(VA, x, e) - rows_detail::turning(VB, x, e) : T(0));
+            if constexpr (Bias) {
+                R.bias[r] = pairing(l, AA) - pairing(l, AB) + (line ? rows_detail::turning(VA, x, e) - rows_detail::turning(VB, x, e) : T(0));
+            } else {
+                R.bias[r] = T(0);
+            }
             R.gap[r] = c.kind == block_kind::orientation ? tilt[axis] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis];
         }
     }

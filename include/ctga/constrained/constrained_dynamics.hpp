@@ -261,7 +261,8 @@ struct constrained_forward_dynamics_t {
         // H = Lᵀ D L; z = L⁻ᵀ (τ − C); the joints' maps evaluated once for H, C and the rows
         joint_maps<Tree, T> X;
         fill_joint_maps(X, m, q);
-        const tree_factor<Tree, T> f = factor_tree<Tree>(mass_matrix(m, q, X));
+        tree_factor<Tree, T> f{mass_matrix(m, q, X), {}, true};  // (H built in place, factored there)
+        factor_tree(f);
         if (!f.positive_definite) return out.error = error_code::massless_subtree, out;
         std::array<T, Tree::nv> z = rnea(m, q, qd, chains::joint_vector<Tree, T>{}, static_cast<const chains::body_wrenches<Tree, T>*>(nullptr), X);
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = tau[k] - z[k];

@@ -10,7 +10,9 @@
 // is the speed along e of A's point at x relative to B's point there, or the relative angular
 // velocity about e. The dofs on both paths move both bodies alike and cancel; the rows visit
 // each body's path only (tables from the tree's type). Jᵀ λ applies the force λ e along ℓ to A
-// and its reaction to B: one line, so the pair's wrenches balance.
+// and its reaction to B: one line, so the pair's wrenches balance. With S = (ω, v) the pairing is
+// ⟨ℓ, S⟩ = e · (v + ω × x) (⟨(e, 0), S⟩ = e · ω): each dof's velocity at x is computed once for
+// the block's three rows, and each body's acceleration at x once for their biases.
 //
 // J̇ q̇, the rows' acceleration at q̈ = 0 (the bias of the constrained dynamics): with the world
 // velocities V_i = V_λ(i) + Σ_k S_k q̇_k and the accelerations at q̈ = 0, A_i = A_λ(i) + Σ_k [V_i, S_k] q̇_k
@@ -34,9 +36,7 @@
 #include <cstdint>
 
 #include "ctga/chains/world_geometry.hpp"
-#include "ctga/collision/line_of_action.hpp"
 #include "ctga/constrained/constraint_set.hpp"
-#include "ctga/mechanics/coscrew.hpp"
 #include "ctga/mechanics/screw.hpp"
 
 namespace ctga::constrained {
@@ -102,13 +102,6 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> angular_of(const screw<T>& s) noexcept { return {s[0], s[1], s[2]}; }
 template <class T>
 [[nodiscard]] constexpr vec3<T> linear_of(const screw<T>& s) noexcept { return {s[3], s[4], s[5]}; }
-// e · (ω × (v + ω × x)) for a body of velocity (ω, v): the part of its point's acceleration at x
-// that the spatial acceleration lacks
-template <class T>
-[[nodiscard]] constexpr T turning(const screw<T>& V, const vec3<T>& x, const vec3<T>& e) noexcept {
-    const vec3<T> w = angular_of(V);
-    return linear3::dot(e, linear3::cross(w, linear3::add(linear_of(V), linear3::cross(w, x))));
-}
 }  // namespace rows_detail
 
 // (Bias false: without J̇ q̇, from a tree_motion filled without it.)
@@ -117,7 +110,6 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
                          const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd) noexcept {
     using P = rows_detail::paths<Tree>;
     const auto world_of = [&](int body, const motor_map<T>& at) { return body < 0 ? at : compose(g.pose[static_cast<std::size_t>(body)], at); };
-    const auto moving = [&](int body, const std::array<screw<T>, Tree::size>& X) { return body < 0 ? screw<T>{} : X[static_cast<std::size_t>(body)]; };
     R.count = 0;
     const std::size_t rows = 3 * C.size();  // (the rows in use: only those are cleared)
     for (auto& column : R.columns)
@@ -138,8 +130,6 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
         const motor_map<T> WA = world_of(c.a, c.at_a), WB = world_of(c.b, c.at_b);
         const vec3<T>& x = WA.t;
         const vec3<T> d = linear3::apply_transposed(WB.R, linear3::sub(WA.t, WB.t));
-        screw<T> VA, VB, AA, AB;  // (Bias: the bodies' velocities and accelerations)
-        if constexpr (Bias) VA = moving(c.a, g.V), VB = moving(c.b, g.V), AA = moving(c.a, g.A), AB = moving(c.b, g.A);
         vec3<T> tilt{};
         if (c.kind == block_kind::orientation) {
             mat3<T> turn;  // R_Bᵀ R_A
@@ -177,15 +167,26 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
         };
         put(c.a, c.b, T(1));
         put(c.b, c.a, T(-1));
+        // the bias e · (b_A − b_B): a body's acceleration at x (a line: the spatial one there, plus
+        // ω × (v + ω × x), above), or its angular acceleration (a couple)
+        vec3<T> b_ab{};
+        if constexpr (Bias) {
+            const auto at_x = [&](int body) {
+                if (body < 0) return vec3<T>{};
+                const screw<T>& V = g.V[static_cast<std::size_t>(body)];
+                const screw<T>& A = g.A[static_cast<std::size_t>(body)];
+                const vec3<T> alpha = rows_detail::angular_of(A);
+                if (!line) return alpha;
+                const vec3<T> w = rows_detail::angular_of(V);
+                const vec3<T> v_x = linear3::add(rows_detail::linear_of(V), linear3::cross(w, x));
+                return linear3::add(linear3::add(rows_detail::linear_of(A), linear3::cross(alpha, x)), linear3::cross(w, v_x));
+            };
+            b_ab = linear3::sub(at_x(c.a), at_x(c.b));
+        }
         for (std::size_t j = 0; j < 3; ++j) {
             const std::size_t r = r0 + j;
             R.rate[r] = rate[j];
-            if constexpr (Bias) {
-                const coscrew<T> l = line ? collision::line_of_action(x, e[j]) : coscrew<T>{e[j][0], e[j][1], e[j][2], T(0), T(0), T(0)};
-                R.bias[r] = pairing(l, AA) - pairing(l, AB) + (line ? rows_detail::turning(VA, x, e[j]) - rows_detail::turning(VB, x, e[j]) : T(0));
-            } else {
-                R.bias[r] = T(0);
-            }
+            R.bias[r] = linear3::dot(e[j], b_ab);
             R.gap[r] = c.kind == block_kind::orientation ? tilt[axis[j]] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis[j]];
         }
     }

@@ -1,7 +1,7 @@
 // Constrained forward dynamics of a kinematic tree: q̈ and the constraint forces λ of
 //     H q̈ + C(q, q̇) = τ + Jᵀ λ,     J q̈ + J̇ q̇ = a_ref      (bilateral blocks)
 //     a = J q̈ + J̇ q̇,  K_μ ∋ λ_i ⊥ ã_i ∈ K*_μ               (contact blocks, at the acceleration level)
-// with H, C of crba and rnea, J the rows of constraint_rows.hpp (λ a row's force on A, in B's
+// with H of crba, C (rnea's, from the world motion: constraint_rows.hpp's bias_forces), J the rows of constraint_rows.hpp (λ a row's force on A, in B's
 // constraint axes; a contact's (n, t1, t2)) and a_ref = −2ω φ̇ − ω² φ (Baumgarte, ω the settings'
 // stabilization; 0: none); a limit's row (constraint_set.hpp) λ ≥ 0 ⊥ a ≥ 0, a joint friction's
 // |λ| ≤ its bound, a = 0 while inside (both solved with the contacts). Eliminating q̈ leaves the contact problem of constraints/ in λ,
@@ -28,7 +28,6 @@
 
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/minverse.hpp"
-#include "ctga/chains/rnea.hpp"
 #include "ctga/constrained/constraint_rows.hpp"
 #include "ctga/constrained/constraint_set.hpp"
 #include "ctga/constrained/delassus.hpp"
@@ -143,9 +142,9 @@ constexpr void rows_of(const chains::algorithm_detail::tree_factor<Tree, T>& f, 
     }
 }
 
-// The rows at (q, q̇), W from the factor f, and q = J H⁻¹ b for z = L⁻ᵀ b (before the bias terms
-// each level adds): what both levels (forces here, impulses in impulse_dynamics.hpp) solve; J̇ q̇
-// (Bias) for forces only.
+// The rows at (q, q̇) from the world motion g, W from the factor f, and q = J H⁻¹ b for z = L⁻ᵀ b
+// (before the bias terms each level adds): what both levels (forces here, impulses in
+// impulse_dynamics.hpp) solve; J̇ q̇ (Bias) for forces only.
 template <class Tree, class T, std::size_t Capacity>
 struct rows_problem {
     constraint_rows<Tree, T, Capacity> R;
@@ -153,12 +152,9 @@ struct rows_problem {
     std::array<T, 3 * Capacity> qv;
 };
 template <bool Bias, class Tree, class T, std::size_t Capacity>
-constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
+constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const tree_motion<Tree, T>& g, const chains::configuration<Tree, T>& q,
                             const chains::joint_vector<Tree, T>& qd, const constraint_set<Tree, T, Capacity>& C,
-                            const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z,
-                            const chains::algorithm_detail::joint_maps<Tree, T>& X) noexcept {
-    tree_motion<Tree, T> g(uninitialized);
-    fill_tree_motion<Bias>(g, m, q, qd, X);
+                            const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z) noexcept {
     fill_rows<Bias>(x.R, g, C, q, qd);
     fill_delassus(x.P, f, x.R);
     rows_of(f, z, x.R, x.P, x.qv);
@@ -258,18 +254,21 @@ struct constrained_forward_dynamics_t {
         using namespace chains::algorithm_detail;
         constrained_result<Tree, T, Capacity> out;
         if (!dynamics_detail::finite_state(q, qd, tau)) return out.error = error_code::non_finite, out;
-        // H = Lᵀ D L; z = L⁻ᵀ (τ − C); the joints' maps evaluated once for H, C and the rows
+        // H = Lᵀ D L; the joints' maps evaluated once for H and the world motion, from which C
+        // (bias_forces) and the rows; z = L⁻ᵀ (τ − C)
         joint_maps<Tree, T> X;
         fill_joint_maps(X, m, q);
         tree_factor<Tree, T> f{mass_matrix(m, q, X), {}, true};  // (H built in place, factored there)
         factor_tree(f);
         if (!f.positive_definite) return out.error = error_code::massless_subtree, out;
-        std::array<T, Tree::nv> z = rnea(m, q, qd, chains::joint_vector<Tree, T>{}, static_cast<const chains::body_wrenches<Tree, T>*>(nullptr), X);
+        tree_motion<Tree, T> g(uninitialized);
+        fill_tree_motion(g, m, q, qd, X);
+        std::array<T, Tree::nv> z = bias_forces(m, g);
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = tau[k] - z[k];
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
         // the rows, W, and q = J H⁻¹ (τ − C) + J̇ q̇ − a_ref
         dynamics_detail::rows_problem<Tree, T, Capacity> x;
-        dynamics_detail::fill_problem<true>(x, m, q, qd, C, f, z, X);
+        dynamics_detail::fill_problem<true>(x, g, q, qd, C, f, z);
         auto& [R, P, qv] = x;
         const T w = settings.stabilization;
         for (std::size_t r = 0; r < R.count; ++r) {

@@ -34,8 +34,13 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 #include "ctga/chains/world_geometry.hpp"
+#include "ctga/mechanics/body_inertia.hpp"
+#include "ctga/mechanics/coscrew.hpp"
+#include "ctga/mechanics/inertia_transform.hpp"
+#include "ctga/mechanics/momentum.hpp"
 #include "ctga/constrained/constraint_set.hpp"
 #include "ctga/mechanics/screw.hpp"
 
@@ -65,8 +70,7 @@ struct tree_motion : chains::algorithm_detail::world_poses<Tree, T> {
     std::array<screw<T>, Tree::size> V, A;
     explicit constexpr tree_motion(uninitialized_t) : chains::algorithm_detail::world_poses<Tree, T>(uninitialized) {}
 };
-// (Bias false: the velocity level's rows, which need no J̇ q̇: A is not computed.)
-template <bool Bias = true, class Tree, class T, class Maps = chains::algorithm_detail::maps_of_q>
+template <class Tree, class T, class Maps = chains::algorithm_detail::maps_of_q>
 constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
                                 const chains::joint_vector<Tree, T>& qd, const Maps& maps = {}) noexcept {
     chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q, maps);
@@ -75,13 +79,36 @@ constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tre
         const std::size_t o = Tree::v_offset[i], n = Tree::nv_of[i];
         screw<T> V = p < 0 ? screw<T>{} : g.V[static_cast<std::size_t>(p)];
         for (std::size_t k = o; k < o + n; ++k) V = V + g.S[k] * qd[k];
+        screw<T> A = p < 0 ? screw<T>{} : g.A[static_cast<std::size_t>(p)];
+        for (std::size_t k = o; k < o + n; ++k) A = A + bracket(V, g.S[k]) * qd[k];
         g.V[i] = V;
-        if constexpr (Bias) {
-            screw<T> A = p < 0 ? screw<T>{} : g.A[static_cast<std::size_t>(p)];
-            for (std::size_t k = o; k < o + n; ++k) A = A + bracket(V, g.S[k]) * qd[k];
-            g.A[i] = A;
-        }
+        g.A[i] = A;
     }
+}
+
+// C(q, q̇), the joint forces at q̈ = 0 (rnea's), from the same world motion: with each body's
+// inertia moved out to the world, N_i, and gravity as the world's acceleration −g (Featherstone's
+// trick, rnea.hpp), f_i = N_i (A_i − g) + V_i ×* (N_i V_i); a subtree's F_i = f_i + Σ_children F_c
+// are plain sums in one frame, and C_k = F_i(S_k) for dof k of body i (no transforms up the tree:
+// the world motion has the poses and S_k already).
+template <class Tree, class T>
+[[nodiscard]] constexpr std::array<T, Tree::nv> bias_forces(const chains::model<Tree, T>& m, const tree_motion<Tree, T>& g) noexcept {
+    std::array<coscrew<T>, Tree::size> F;
+    const vec3<T> up = chains::algorithm_detail::minus(m.gravity);
+    const screw<T> lift{T(0), T(0), T(0), up[0], up[1], up[2]};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+        ([&] {
+             const body_inertia<T> N = transform(g.pose[I], m.template link<I>().inertia);
+             const screw<T> a = g.A[I] + lift;
+             F[I] = momentum(N, a) + coadjoint(g.V[I], momentum(N, g.V[I]));
+         }(),
+         ...);
+    }(std::make_index_sequence<Tree::size>{});
+    for (std::size_t i = Tree::size; i-- > 0;)
+        if (const int p = Tree::parent[i]; p >= 0) F[static_cast<std::size_t>(p)] = F[static_cast<std::size_t>(p)] + F[i];
+    std::array<T, Tree::nv> C;
+    for (std::size_t k = 0; k < Tree::nv; ++k) C[k] = pairing(F[Tree::body_of_dof[k]], g.S[k]);
+    return C;
 }
 
 // The rows of a set's blocks (3 each, in block order), stored by dof: columns[k][r] = J(r, k),
@@ -104,7 +131,7 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> linear_of(const screw<T>& s) noexcept { return {s[3], s[4], s[5]}; }
 }  // namespace rows_detail
 
-// (Bias false: without J̇ q̇, from a tree_motion filled without it.)
+// (Bias false: without J̇ q̇, the velocity level's rows.)
 template <bool Bias = true, class Tree, class T, std::size_t Capacity>
 constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motion<Tree, T>& g, const constraint_set<Tree, T, Capacity>& C,
                          const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd) noexcept {

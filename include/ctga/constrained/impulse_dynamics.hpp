@@ -2,7 +2,7 @@
 // time-stepping of Stewart and Trinkle, Anitescu and Potra, as MuJoCo and Box3D step): over a step
 // h from (q, q̇), the impulses r of the constraint rows and the velocity after,
 //     (H + h B) (q̇⁺ − q̇) = h (τ − C(q, q̇) − B q̇) + Jᵀ r,       u = J q̇⁺ + b,
-// H, C, J at (q, q̇) (crba, rnea, constraint_rows.hpp), B the joints' viscous damping (diagonal:
+// H, C, J at (q, q̇) (crba, constraint_rows.hpp's bias_forces and rows), B the joints' viscous damping (diagonal:
 // URDF <dynamics damping>), taken implicitly (stable at any h and damping), and each block's
 // condition on u (the solver of constraints/, the tolerance the caller's):
 //   contact  K_μ ∋ r ⊥ ũ ∈ K*_μ (Coulomb's cone, De Saxcé's ũ), with b_n = φ/h while apart (φ > 0:
@@ -29,7 +29,6 @@
 
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/minverse.hpp"
-#include "ctga/chains/rnea.hpp"
 #include "ctga/constrained/constrained_dynamics.hpp"
 #include "ctga/constrained/constraint_rows.hpp"
 #include "ctga/constrained/constraint_set.hpp"
@@ -81,15 +80,17 @@ constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::c
     for (std::size_t k = 0; k < Tree::nv; ++k) f.LD[k][k] += h * damping[k];
     factor_tree(f);
     if (!f.positive_definite) return void(out.error = error_code::massless_subtree);
+    tree_motion<Tree, T> g(uninitialized);
+    fill_tree_motion(g, m, q, qd, X);
     std::array<T, Tree::nv> z{};
     if (h > T(0)) {
-        z = rnea(m, q, qd, chains::joint_vector<Tree, T>{}, static_cast<const chains::body_wrenches<Tree, T>*>(nullptr), X);
+        z = bias_forces(m, g);  // C, from the world motion the rows read (constraint_rows.hpp)
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = h * (tau[k] - z[k] - damping[k] * qd[k]);
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
     }
     // the rows, W, and q = J q̇ + J (H + hB)⁻¹ h (τ − C − B q̇) + b
     dynamics_detail::rows_problem<Tree, T, Capacity> x;
-    dynamics_detail::fill_problem<false>(x, m, q, qd, C, f, z, X);  // (no J̇ q̇ at the velocity level)
+    dynamics_detail::fill_problem<false>(x, g, q, qd, C, f, z);  // (no J̇ q̇ at the velocity level)
     auto& [R, P, qv] = x;
     const T beta = settings.recovery;
     for (std::size_t r = 0; r < R.count; ++r) {

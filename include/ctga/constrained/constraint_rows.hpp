@@ -93,17 +93,16 @@ constexpr void fill_tree_motion(tree_motion<Tree, T>& g, const chains::model<Tre
 // the world motion has the poses and S_k already).
 template <class Tree, class T>
 [[nodiscard]] constexpr std::array<T, Tree::nv> bias_forces(const chains::model<Tree, T>& m, const tree_motion<Tree, T>& g) noexcept {
-    std::array<coscrew<T>, Tree::size> F;
+    std::array<body_inertia<T>, Tree::size> N;
+    [&]<std::size_t... I>(std::index_sequence<I...>) { ((N[I] = m.template link<I>().inertia), ...); }(std::make_index_sequence<Tree::size>{});
     const vec3<T> up = chains::algorithm_detail::minus(m.gravity);
     const screw<T> lift{T(0), T(0), T(0), up[0], up[1], up[2]};
-    [&]<std::size_t... I>(std::index_sequence<I...>) {
-        ([&] {
-             const body_inertia<T> N = transform(g.pose[I], m.template link<I>().inertia);
-             const screw<T> a = g.A[I] + lift;
-             F[I] = momentum(N, a) + coadjoint(g.V[I], momentum(N, g.V[I]));
-         }(),
-         ...);
-    }(std::make_index_sequence<Tree::size>{});
+    std::array<coscrew<T>, Tree::size> F;
+    for (std::size_t i = 0; i < Tree::size; ++i) {  // (one loop for every body: the same work in the world frame)
+        const body_inertia<T> Ni = transform(g.pose[i], N[i]);
+        const screw<T> a = g.A[i] + lift;
+        F[i] = momentum(Ni, a) + coadjoint(g.V[i], momentum(Ni, g.V[i]));
+    }
     for (std::size_t i = Tree::size; i-- > 0;)
         if (const int p = Tree::parent[i]; p >= 0) F[static_cast<std::size_t>(p)] = F[static_cast<std::size_t>(p)] + F[i];
     std::array<T, Tree::nv> C;

@@ -55,6 +55,19 @@ struct constrained_result {
 };
 
 namespace dynamics_detail {
+// Σ_k a_k b_k over k < n in four interleaved parts (k ≡ 0, 1, 2, 3 mod 4), added at the end:
+// four multiply-adds in flight rather than a chain, each waiting on the last (measured, the
+// velocities of a grasp's 24 rows in the sweeps: 10 % of its step as one chain).
+template <class T>
+[[nodiscard]] constexpr T dot_in_parts(const T* a, const T* b, std::size_t n) noexcept {
+    std::array<T, 4> part{};
+    const std::size_t whole = n - n % 4;
+    for (std::size_t k = 0; k < whole; k += 4)
+        for (std::size_t j = 0; j < 4; ++j) part[j] += a[k + j] * b[k + j];
+    for (std::size_t k = whole; k < n; ++k) part[k - whole] += a[k] * b[k];
+    return (part[0] + part[1]) + (part[2] + part[3]);
+}
+
 // W λ = −q for a positive semidefinite W of m rows (above); returns the rows kept. LDLᵀ by rows,
 // L kept both ways (Lt = Lᵀ) so that both substitutions run by columns, y_i −= L(i, k) y_k for all
 // i at once after y_k is final, on contiguous rows (measured, 12 rows: 466 ns with the
@@ -119,20 +132,9 @@ struct blocks_delassus {
             for (std::size_t b = 0; b < 3; ++b) out[a][b] = W[3 * i + a][3 * i + b] + (a == b && bilateral(i) ? regularised : T(0));
         return out;
     }
-    // q_i + W_i r: each row's sum in four parts (the rows' numbers k ≡ 0, 1, 2, 3 mod 4), so that
-    // four multiply-adds are in flight rather than one waiting on the last (measured, a grasp's
-    // 24 rows: this sum took 10 % of its step done as one chain)
     [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> r) const noexcept {
-        const std::size_t n = q.size(), whole = n - n % 4;
         vec3<T> u;
-        for (std::size_t a = 0; a < 3; ++a) {
-            const std::array<T, N>& w = W[3 * i + a];
-            std::array<T, 4> part{};
-            for (std::size_t k = 0; k < whole; k += 4)
-                for (std::size_t j = 0; j < 4; ++j) part[j] += w[k + j] * r[k + j];
-            for (std::size_t k = whole; k < n; ++k) part[k - whole] += w[k] * r[k];
-            u[a] = q[3 * i + a] + ((part[0] + part[1]) + (part[2] + part[3]));
-        }
+        for (std::size_t a = 0; a < 3; ++a) u[a] = q[3 * i + a] + dot_in_parts(W[3 * i + a].data(), r.data(), q.size());
         return u;
     }
     constexpr void apply(std::size_t, const vec3<T>&) const noexcept {}
@@ -193,8 +195,7 @@ constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tre
         rank = semidefinite_solve(P.W, R.count, qv, settings.redundancy, force);
         T sum = T(0);
         for (std::size_t r = 0; r < R.count; ++r) {
-            T u = qv[r];
-            for (std::size_t s = 0; s < R.count; ++s) u += P.W[r][s] * force[s];
+            const T u = qv[r] + dot_in_parts(P.W[r].data(), force.data(), R.count);
             sum += u * u;
         }
         report.residual = math::sqrt(sum);

@@ -59,8 +59,7 @@ constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chain
         for (std::size_t r = first; r < last; ++r) out.Y[i][r] -= l * out.Y[k][r];
     });
     // W: D_k⁻¹ y_k y_kᵀ on the span of dof k's rows
-    for (std::size_t r = 0; r < n; ++r)
-        for (std::size_t c = 0; c < n; ++c) out.W[r][c] = T(0);
+    for (std::size_t r = 0; r < n; ++r) out.W[r].fill(T(0));  // (whole rows: stores of a known length, no call per row)
     for (std::size_t k = 0; k < Tree::nv; ++k) {
         const auto [first, last] = row_span(R.reach[k]);
         for (std::size_t r = first; r < last; ++r) {

@@ -30,6 +30,7 @@
 #include "ctga/chains/configuration_space.hpp"
 #include "ctga/chains/joint_limits.hpp"
 #include "ctga/chains/world_geometry.hpp"
+#include "ctga/collision/aabb.hpp"
 #include "ctga/collision/shape_set.hpp"
 #include "ctga/constrained/constraint_set.hpp"
 #include "ctga/constrained/impulse_dynamics.hpp"
@@ -91,14 +92,20 @@ class contact_stepper {
                 report.penetration = -c.separation > report.penetration ? -c.separation : report.penetration;
             }
         };
+        // each shape's pose and its box grown by the margin, once; the robot's own pairs go to the
+        // narrow phase only where their boxes overlap (two shapes within the margin have boxes
+        // within it too)
+        std::array<motor_map<T>, N> pose;
+        std::array<collision::aabb<T>, N> bounds;
+        for (std::size_t i = 0; i < shapes.size(); ++i)
+            pose[i] = pose_of(shapes[i]), bounds[i] = collision::fattened(collision::bounds_of(shapes[i].shape, pose[i]), settings.margin);
         for (std::size_t i = 0; i < shapes.size(); ++i) {
-            const motor_map<T> pi = pose_of(shapes[i]);
             for (std::size_t w = 0; w < world.size(); ++w)
-                add_manifold(collision::contact_of(shapes[i].shape, pi, world[w].shape, world[w].pose, settings.margin), shapes[i].body, -1,
+                add_manifold(collision::contact_of(shapes[i].shape, pose[i], world[w].shape, world[w].pose, settings.margin), shapes[i].body, -1,
                              (i << 16) | w);
             for (std::size_t j = i + 1; j < shapes.size(); ++j)
-                if (geometry.collides(shapes[i].body, shapes[j].body))
-                    add_manifold(collision::contact_of(shapes[i].shape, pi, shapes[j].shape, pose_of(shapes[j]), settings.margin), shapes[i].body,
+                if (geometry.collides(shapes[i].body, shapes[j].body) && collision::overlaps(bounds[i], bounds[j]))
+                    add_manifold(collision::contact_of(shapes[i].shape, pose[i], shapes[j].shape, pose[j], settings.margin), shapes[i].body,
                                  shapes[j].body, (i << 16) | (j + 0x8000));
         }
         // 2. limits and joint friction

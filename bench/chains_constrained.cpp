@@ -5,16 +5,19 @@
 //   delassus_quadruped/ctga         the 12 × 12 Delassus operator J H⁻¹ Jᵀ (delassus)
 // beside the same run's aba_quadruped/ctga (the target: constrained forward dynamics ≤ 2× ABA);
 // and a step of the quadruped standing on the ground on four sphere feet under a PD controller
-// (contact_scenario, chains_mujoco.hpp: the same numbers for MuJoCo's row):
+// (contact_scenario, chains_mujoco.hpp: the same numbers for MuJoCo's and DART's rows):
 //   contact_step_quadruped/ctga     contact_stepper::step (collision, limits, one solve, Euler)
 //   contact_step_quadruped/mujoco   mj_step (chains_mujoco.cpp)
+//   contact_step_quadruped/dart     World::step (chains_dart.cpp; DART 6.12, when found by CMake)
 // each with its foot slip and sinking printed (stderr) after the same settling.
 #include <cmath>
 #include <memory>
+#include <vector>
 
 #include <ctga/constrained/constrained_dynamics.hpp>
 
 #include "chains_contact_steps.hpp"
+#include "chains_dart.hpp"
 
 namespace bench::chains {
 namespace {
@@ -85,6 +88,50 @@ contact_scenario standing_quadruped() {
     return s;
 }
 
+// ctga's numbers for DART's model check (add_dart_contact): the fixture's first 8 states in
+// mujoco_case's coordinates (make_mujoco_case's conversion, which is compiled only with MuJoCo),
+// H and τ = H q̈ + C on them from the forms constrained dynamics instantiates here already (H from
+// the shared joint maps, C from the world motion: no other instantiation of CRBA or RNEA in this
+// unit, whose compile time the issue bounds).
+[[maybe_unused]] mujoco_case dart_reference(const fixture<legged_tree>& f) {
+    mujoco_case c;
+    c.label = "quadruped";
+    c.nv = legged_tree::nv;
+    for (std::size_t s = 0; s < 8; ++s) {
+        const state<legged_tree>& x = f.states[s];
+        std::vector<double> q;
+        for (std::size_t i = 0; i < legged_tree::size; ++i) {
+            const std::size_t o = legged_tree::q_offset[i];
+            if (legged_tree::nq_of[i] == 8) {  // the floating joint's motor: its map's translation, its unit rotor
+                ctga::motor<double> g{};
+                for (std::size_t k = 0; k < 8; ++k) g[k] = x.q[o + k];
+                const auto G = ctga::map_of(g);
+                const double n = std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2] + g[3] * g[3]);
+                q.insert(q.end(), {G.t[0], G.t[1], G.t[2], g[0] / n, g[1] / n, g[2] / n, g[3] / n});
+            } else if (legged_tree::nq_of[i] == 1) {
+                q.push_back(x.q[o]);
+            }
+        }
+        c.q.push_back(std::move(q));
+        c.qd.emplace_back(x.qd.begin(), x.qd.end());
+        c.qdd.emplace_back(x.qdd.begin(), x.qdd.end());
+        namespace chd = ch::algorithm_detail;
+        chd::joint_maps<legged_tree, double> X;
+        chd::fill_joint_maps(X, f.m, x.q);
+        const auto H = chd::mass_matrix(f.m, x.q, X);
+        cn::tree_motion<legged_tree, double> g(ctga::uninitialized);
+        cn::fill_tree_motion(g, f.m, x.q, x.qd, X);
+        std::array<double, legged_tree::nv> tau = cn::bias_forces(f.m, g);
+        for (std::size_t k = 0; k < legged_tree::nv; ++k)
+            for (std::size_t j = 0; j < legged_tree::nv; ++j) tau[k] += H[k][j] * x.qdd[j];
+        c.tau_ref.emplace_back(tau.begin(), tau.end());
+        std::vector<double> h;
+        for (const auto& row : H) h.insert(h.end(), row.begin(), row.end());
+        c.H_ref.push_back(std::move(h));
+    }
+    return c;
+}
+
 }  // namespace
 
 void add_constrained(std::vector<entry>& table) {
@@ -94,5 +141,6 @@ void add_constrained(std::vector<entry>& table) {
     using namespace contact_detail;
     const contact_scenario s = standing_quadruped();
     add_contact_step(table, s, std::make_shared<contact_robot<legged_tree, co::shape<co::sphere<double>>, 4, 8>>(s, ctga_model<legged_tree>(solo12())));
+    if constexpr (dart_enabled) add_dart_contact(table, s, dart_reference(c.f));
 }
 }  // namespace bench::chains

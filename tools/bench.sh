@@ -14,7 +14,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cd "$root"
 export BUILD_DIR=${BUILD_DIR:-$root/build}
 
-bash tools/deps.sh valgrind python3-matplotlib libmujoco-dev libfcl-dev libbullet-dev libode-dev
+bash tools/deps.sh valgrind python3-matplotlib libmujoco-dev libfcl-dev libbullet-dev libode-dev libdart-dev
 bash tools/configure.sh -DCTGA_BUILD_BENCHMARKS=ON
 cmake --build "$BUILD_DIR" --target ctga_bench -j"$(nproc)"
 out=$BUILD_DIR/bench

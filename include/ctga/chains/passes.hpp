@@ -97,14 +97,14 @@ constexpr vec3<T> minus(const vec3<T>& g) noexcept {
 
 // Every body's map in its parent's frame, X_i = placement ∘ joint motion (a revolute joint's cos
 // and sin): fill_joint_maps computes them once for several algorithms at one q (constrained/:
-// CRBA, RNEA and the world poses of a step), which take them as `maps`; maps_of_q (the default)
-// has each algorithm evaluate the joints' motions itself.
+// CRBA and the world poses of a step), which take them as `maps`; maps_of_q (the default) has
+// each algorithm evaluate the joints' motions itself.
 template <class Tree, class T>
 using joint_maps = std::array<motor_map<T>, Tree::size>;
 struct maps_of_q {};
 // Body b's map: from the maps given, or from q.
 template <class B, class Tree, class T, class Maps>
-CTGA_ALWAYS_INLINE constexpr motor_map<T> map_of(const B& b, const model<Tree, T>& m, const configuration<Tree, T>& q, const Maps& maps) noexcept {
+CTGA_ALWAYS_INLINE constexpr motor_map<T> body_map(const B& b, const model<Tree, T>& m, const configuration<Tree, T>& q, const Maps& maps) noexcept {
     if constexpr (std::is_same_v<Maps, maps_of_q>) {
         const auto& L = b.link(m);
         return B::joint::motion(L.placement, L.joint, q.data() + b.q_src);
@@ -114,7 +114,7 @@ CTGA_ALWAYS_INLINE constexpr motor_map<T> map_of(const B& b, const model<Tree, T
 }
 template <class Tree, class T>
 constexpr void fill_joint_maps(joint_maps<Tree, T>& X, const model<Tree, T>& m, const configuration<Tree, T>& q) noexcept {
-    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA { X[b.i] = map_of(b, m, q, maps_of_q{}); });
+    each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA { X[b.i] = body_map(b, m, q, maps_of_q{}); });
 }
 
 enum class pass { poses, velocities, accelerations };
@@ -123,21 +123,21 @@ enum class pass { poses, velocities, accelerations };
 // one loop, runs.hpp): maps, world poses (when Poses), velocities and accelerations (as asked),
 // then then(body, k) while the body's numbers are at hand (RNEA's
 // forces; the body's map k.X[i] is stored only after it). RNEA and ABA need no world poses:
-// only each body's map in its parent (from q, or the maps given). Every number asked for is
-// written before it is read, so k may start uninitialized.
+// only each body's map in its parent. Every number asked for is written before it is read, so
+// k may start uninitialized.
 struct no_body_work {
     template <class B, class K>
     constexpr void operator()(B, const K&) const noexcept {}
 };
-template <pass What, bool Poses, class Tree, class T, class Then = no_body_work, class Maps = maps_of_q>
+template <pass What, bool Poses, class Tree, class T, class Then = no_body_work>
 constexpr void forward_pass(kinematics<Tree, T>& k, const model<Tree, T>& m, const configuration<Tree, T>& q, const T* qd,
-                            const T* qdd, const vec3<T>& a_world, Then&& then = {}, const Maps& maps = {}) noexcept {
+                            const T* qdd, const vec3<T>& a_world, Then&& then = {}) noexcept {
     each_body(m, [&](const auto& b) CTGA_INLINE_LAMBDA {
         using B = std::remove_cvref_t<decltype(b)>;
         using J = typename B::joint;
         const std::size_t i = b.i;
         const auto& L = b.link(m);
-        const motor_map<T> X = map_of(b, m, q, maps);  // stored in k.X after the body's work
+        const motor_map<T> X = J::motion(L.placement, L.joint, q.data() + b.q_src);  // stored in k.X after the body's work
         constexpr linear3::shape S = map_shape<J>;
         if constexpr (!Poses) {
         } else if constexpr (B::root) {

@@ -23,9 +23,9 @@
 namespace ctga::chains {
 
 namespace algorithm_detail {
-template <class Tree, class T, class Maps = maps_of_q>
+template <class Tree, class T>
 constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuration<Tree, T>& q, const joint_vector<Tree, T>& qd,
-                                     const joint_vector<Tree, T>& qdd, const body_wrenches<Tree, T>* f_ext, const Maps& maps = {}) noexcept {
+                                     const joint_vector<Tree, T>& qdd, const body_wrenches<Tree, T>* f_ext) noexcept {
     auto f = uninitialized_array<coscrew<T>, Tree::size>();
     kinematics<Tree, T> k{uninitialized};
     forward_pass<pass::accelerations, false>(
@@ -35,8 +35,7 @@ constexpr joint_vector<Tree, T> rnea(const model<Tree, T>& m, const configuratio
             // f_i = N a_i + v_i ×* (N v_i) − f_ext
             f[i] = momentum(N, kb.a[i]) + coadjoint(kb.v[i], momentum(N, kb.v[i]));
             if (f_ext) f[i] = f[i] - (*f_ext)[i];
-        },
-        maps);
+        });
     joint_vector<Tree, T> tau{};
     each_body_backward(m, [&](const auto& body) {
         using B = std::remove_cvref_t<decltype(body)>;

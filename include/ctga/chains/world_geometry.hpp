@@ -48,7 +48,7 @@ constexpr void fill_world_poses(world_poses<Tree, T>& g, const model<Tree, T>& m
         using J = typename B::joint;
         const std::size_t i = b.i;
         const auto& L = b.link(m);
-        const motor_map<T> X = map_of(b, m, q, maps);
+        const motor_map<T> X = body_map(b, m, q, maps);
         if constexpr (B::root) g.pose[i] = X;
         else g.pose[i] = compose<map_shape<J>>(g.pose[b.p], X);
         [&]<std::size_t... K>(std::index_sequence<K...>) CTGA_INLINE_LAMBDA {

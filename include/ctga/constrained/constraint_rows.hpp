@@ -32,6 +32,7 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -63,6 +64,18 @@ struct paths {
     [[nodiscard]] static constexpr bool holds(int b, std::size_t k) noexcept { return b >= 0 && member[static_cast<std::size_t>(b)][k]; }
 };
 }  // namespace rows_detail
+
+// The blocks of a mask, as bit indices, lowest first.
+template <class F>
+constexpr void each_block(std::uint64_t mask, F&& f) noexcept {
+    for (; mask != 0; mask &= mask - 1) f(static_cast<std::size_t>(std::countr_zero(mask)));
+}
+// The rows from the first block of a mask to the end of its last: [3 lowest, 3 (highest + 1)).
+[[nodiscard]] constexpr std::array<std::size_t, 2> row_span(std::uint64_t mask) noexcept {
+    return mask == 0 ? std::array<std::size_t, 2>{0, 0}
+                     : std::array<std::size_t, 2>{std::size_t(3) * static_cast<std::size_t>(std::countr_zero(mask)),
+                                                  std::size_t(3) * (64 - static_cast<std::size_t>(std::countl_zero(mask)))};
+}
 
 // Every body's pose, velocity and acceleration at q̈ = 0 in the world, and its dofs' S (above).
 template <class Tree, class T>
@@ -130,69 +143,62 @@ template <class T>
 [[nodiscard]] constexpr vec3<T> linear_of(const screw<T>& s) noexcept { return {s[3], s[4], s[5]}; }
 }  // namespace rows_detail
 
-// (Bias false: without J̇ q̇, the velocity level's rows.)
+// (Bias false: without J̇ q̇, the velocity level's rows.) Two passes: each block's lines ℓ = (x × e,
+// e) (a couple's (e, 0)) by rows, stored by component, then each body's dofs over the span of the
+// blocks reaching them, J(r, k) = σ ⟨ℓ_r, S_k⟩ with σ = +1, −1 or 0 by the block's paths (above):
+// six multiply-adds a row, vectorised across the rows (measured: a grasp's 24 rows 522 → 283 ns,
+// Solo 12's four feet 335 → 361 ns, against the entries by block and dof).
 template <bool Bias = true, class Tree, class T, std::size_t Capacity>
 constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motion<Tree, T>& g, const constraint_set<Tree, T, Capacity>& C,
                          const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd) noexcept {
     using P = rows_detail::paths<Tree>;
+    constexpr std::size_t max_rows = 3 * Capacity;
     const auto world_of = [&](int body, const motor_map<T>& at) { return body < 0 ? at : compose(g.pose[static_cast<std::size_t>(body)], at); };
-    R.count = 0;
-    const std::size_t rows = 3 * C.size();  // (the rows in use: only those are cleared)
+    const auto point_of = [&](int body, const vec3<T>& x) {
+        return body < 0 ? x : linear3::add(linear3::apply(g.pose[static_cast<std::size_t>(body)].R, x), g.pose[static_cast<std::size_t>(body)].t);
+    };
+    const std::size_t rows = 3 * C.size();
+    R.count = rows;
+    R.reach.fill(0);
     for (auto& column : R.columns)
         for (std::size_t r = 0; r < rows; ++r) column[r] = T(0);
-    R.reach.fill(0);
-    for (const constraint_block<T>& c : C.blocks()) {
+    std::array<std::array<T, max_rows>, 6> line;  // ℓ by component: moment (x × e or e), then direction (e or 0)
+    std::array<T, max_rows> rate;                 // J q̇ (local: the columns' stores cannot alias it)
+    for (std::size_t p = 0; p < C.size(); ++p) {
+        const constraint_block<T>& c = C.blocks()[p];
+        const std::size_t r0 = 3 * p;
+        const auto reach = [&](int body) {
+            if (body < 0) return;
+            const std::size_t u = static_cast<std::size_t>(body);
+            for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) R.reach[P::lists.list[n]] |= std::uint64_t(1) << p;
+        };
+        reach(c.a);
         if (on_joint(c.kind)) {
-            const std::size_t u = static_cast<std::size_t>(c.a), k = Tree::v_offset[u], r = R.count;
+            const std::size_t u = static_cast<std::size_t>(c.a), k = Tree::v_offset[u];
             const T sign = c.kind == block_kind::upper_limit ? T(-1) : T(1);
-            for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) R.reach[P::lists.list[n]] |= std::uint64_t(1) << (r / 3);
-            R.columns[k][r] = sign;
-            for (std::size_t j = r; j < r + 3; ++j) R.rate[j] = R.bias[j] = R.gap[j] = T(0);
-            R.rate[r] = sign * qd[k];
-            R.gap[r] = c.kind == block_kind::joint_friction ? T(0) : sign * (q[Tree::q_offset[u]] - c.bound);
-            R.count += 3;
+            for (std::size_t j = r0; j < r0 + 3; ++j) {
+                rate[j] = R.bias[j] = R.gap[j] = T(0);
+                for (auto& component : line) component[j] = T(0);
+            }
+            rate[r0] = sign * qd[k];
+            R.gap[r0] = c.kind == block_kind::joint_friction ? T(0) : sign * (q[Tree::q_offset[u]] - c.bound);
             continue;
         }
-        const motor_map<T> WA = world_of(c.a, c.at_a), WB = world_of(c.b, c.at_b);
-        const vec3<T>& x = WA.t;
-        const vec3<T> d = linear3::apply_transposed(WB.R, linear3::sub(WA.t, WB.t));
-        vec3<T> tilt{};
-        if (c.kind == block_kind::orientation) {
+        reach(c.b);
+        const bool line_kind = c.kind != block_kind::orientation;
+        const motor_map<T> WB = world_of(c.b, c.at_b);
+        vec3<T> x, tilt{};
+        if (line_kind) {
+            x = point_of(c.a, c.at_a.t);  // (a line needs A's point only)
+        } else {
+            const motor_map<T> WA = world_of(c.a, c.at_a);
+            x = WA.t;
             mat3<T> turn;  // R_Bᵀ R_A
             for (std::size_t r = 0; r < 3; ++r)
                 for (std::size_t s = 0; s < 3; ++s) turn[r][s] = WB.R[0][r] * WA.R[0][s] + WB.R[1][r] * WA.R[1][s] + WB.R[2][r] * WA.R[2][s];
             tilt = {(turn[2][1] - turn[1][2]) / T(2), (turn[0][2] - turn[2][0]) / T(2), (turn[1][0] - turn[0][1]) / T(2)};
         }
-        const bool line = c.kind != block_kind::orientation;
-        const std::size_t r0 = R.count;
-        R.count += 3;
-        std::array<std::size_t, 3> axis;
-        std::array<vec3<T>, 3> e;
-        for (std::size_t j = 0; j < 3; ++j) {
-            axis[j] = c.kind == block_kind::contact ? (j + 2) % 3 : j;  // contact: z, x, y
-            e[j] = {WB.R[0][axis[j]], WB.R[1][axis[j]], WB.R[2][axis[j]]};
-        }
-        // ⟨ℓ, S⟩ = e · (v + ω × x) for the line ℓ = (x × e, e) and S = (ω, v), e · ω for the couple
-        // (e, 0): each dof's velocity at x once, then its three rows
-        std::array<T, 3> rate{};
-        const auto put = [&](int body, int other, T sign) {
-            if (body < 0) return;
-            const std::size_t u = static_cast<std::size_t>(body);
-            for (std::size_t n = P::lists.first[u]; n < P::lists.first[u + 1]; ++n) {
-                const std::size_t k = P::lists.list[n];
-                R.reach[k] |= std::uint64_t(1) << (r0 / 3);
-                if (P::holds(other, k)) continue;  // (moves both alike)
-                const vec3<T> w = rows_detail::angular_of(g.S[k]);
-                const vec3<T> at = line ? linear3::add(rows_detail::linear_of(g.S[k]), linear3::cross(w, x)) : w;
-                for (std::size_t j = 0; j < 3; ++j) {
-                    const T entry = sign * linear3::dot(e[j], at);
-                    R.columns[k][r0 + j] = entry;
-                    rate[j] += entry * qd[k];
-                }
-            }
-        };
-        put(c.a, c.b, T(1));
-        put(c.b, c.a, T(-1));
+        const vec3<T> d = linear3::apply_transposed(WB.R, linear3::sub(x, WB.t));
         // the bias e · (b_A − b_B): a body's acceleration at x (a line: the spatial one there, plus
         // ω × (v + ω × x), above), or its angular acceleration (a couple)
         vec3<T> b_ab{};
@@ -202,7 +208,7 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
                 const screw<T>& V = g.V[static_cast<std::size_t>(body)];
                 const screw<T>& A = g.A[static_cast<std::size_t>(body)];
                 const vec3<T> alpha = rows_detail::angular_of(A);
-                if (!line) return alpha;
+                if (!line_kind) return alpha;
                 const vec3<T> w = rows_detail::angular_of(V);
                 const vec3<T> v_x = linear3::add(rows_detail::linear_of(V), linear3::cross(w, x));
                 return linear3::add(linear3::add(rows_detail::linear_of(A), linear3::cross(alpha, x)), linear3::cross(w, v_x));
@@ -210,12 +216,44 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
             b_ab = linear3::sub(at_x(c.a), at_x(c.b));
         }
         for (std::size_t j = 0; j < 3; ++j) {
-            const std::size_t r = r0 + j;
-            R.rate[r] = rate[j];
-            R.bias[r] = linear3::dot(e[j], b_ab);
-            R.gap[r] = c.kind == block_kind::orientation ? tilt[axis[j]] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis[j]];
+            const std::size_t r = r0 + j, axis = c.kind == block_kind::contact ? (j + 2) % 3 : j;  // contact: z, x, y
+            const vec3<T> e{WB.R[0][axis], WB.R[1][axis], WB.R[2][axis]};
+            const vec3<T> moment = line_kind ? linear3::cross(x, e) : e;
+            for (std::size_t i = 0; i < 3; ++i) line[i][r] = moment[i], line[3 + i][r] = line_kind ? e[i] : T(0);
+            rate[r] = T(0);
+            R.bias[r] = linear3::dot(e, b_ab);
+            R.gap[r] = c.kind == block_kind::orientation ? tilt[axis] : c.kind == block_kind::contact && j > 0 ? T(0) : d[axis];
         }
     }
+    // each dof's column over its span: σ ⟨ℓ, S_k⟩ (σ per block: +1 on A's path only, −1 on B's
+    // only, 0 on both, or for a joint's block; the same for a body's dofs), zero elsewhere; the
+    // rates J q̇ with it
+    for (std::size_t b = 0; b < Tree::size; ++b) {
+        const std::size_t o = Tree::v_offset[b], dofs = Tree::nv_of[b];
+        if (dofs == 0) continue;
+        const auto [first, last] = row_span(R.reach[o]);
+        std::array<T, max_rows> sign;
+        for (std::size_t p = first / 3; p < last / 3; ++p) {
+            const constraint_block<T>& c = C.blocks()[p];
+            sign[3 * p] = sign[3 * p + 1] = sign[3 * p + 2] = on_joint(c.kind) ? T(0) : T(int(P::holds(c.a, o)) - int(P::holds(c.b, o)));
+        }
+        for (std::size_t k = o; k < o + dofs; ++k) {
+            auto& column = R.columns[k];
+            const screw<T>& S = g.S[k];
+            const T qk = qd[k];
+            for (std::size_t r = first; r < last; ++r) {
+                const T entry = sign[r] * (line[0][r] * S[0] + line[1][r] * S[1] + line[2][r] * S[2] + line[3][r] * S[3] + line[4][r] * S[4] +
+                                           line[5][r] * S[5]);
+                column[r] = entry;
+                rate[r] += entry * qk;
+            }
+        }
+    }
+    for (std::size_t r = 0; r < rows; ++r) R.rate[r] = rate[r];
+    // a joint's row: ±1 on its dof
+    for (std::size_t p = 0; p < C.size(); ++p)
+        if (const constraint_block<T>& c = C.blocks()[p]; on_joint(c.kind))
+            R.columns[Tree::v_offset[static_cast<std::size_t>(c.a)]][3 * p] = c.kind == block_kind::upper_limit ? T(-1) : T(1);
 }
 
 }  // namespace ctga::constrained

@@ -85,8 +85,10 @@ class contact_stepper {
                 const collision::contact_point<T>& c = mf.points[p];
                 motor_map<T> at_a = chains::tree_detail::identity_map<T>();
                 at_a.t = point_in(g.pose[static_cast<std::size_t>(a)], c.point_a);
-                motor_map<T> at_b = constraint_set<Tree, T, Capacity>::contact_frame(c.point_b, n);
-                if (b >= 0) at_b = compose(inverse(g.pose[static_cast<std::size_t>(b)]), at_b);
+                // B's frame at its witness, built in B's axes (its tangents turn with B)
+                const motor_map<T>* G = b >= 0 ? &g.pose[static_cast<std::size_t>(b)] : nullptr;
+                const motor_map<T> at_b = constraint_set<Tree, T, Capacity>::contact_frame(G ? point_in(*G, c.point_b) : c.point_b,
+                                                                                         G ? linear3::apply_transposed(G->R, n) : n);
                 keep({block_kind::contact, a, b, at_a, at_b, settings.mu}, key(1, (pair << 32) | c.id), report);
                 ++report.contacts;
                 report.penetration = -c.separation > report.penetration ? -c.separation : report.penetration;

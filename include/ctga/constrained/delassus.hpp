@@ -15,6 +15,7 @@
 #include <bit>
 #include <cstddef>
 #include <cstdint>
+#include <utility>
 
 #include "ctga/chains/crba.hpp"
 #include "ctga/chains/minverse.hpp"
@@ -31,18 +32,6 @@ struct delassus_parts {
     std::array<std::array<T, max_rows>, max_rows> W;   // Y D⁻¹ Yᵀ on the rows in use (the rest unset)
 };
 
-// The blocks of a mask, as bit indices, lowest first.
-template <class F>
-constexpr void each_block(std::uint64_t mask, F&& f) noexcept {
-    for (; mask != 0; mask &= mask - 1) f(static_cast<std::size_t>(std::countr_zero(mask)));
-}
-// The rows from the first block of a mask to the end of its last: [3 lowest, 3 (highest + 1)).
-[[nodiscard]] constexpr std::array<std::size_t, 2> row_span(std::uint64_t mask) noexcept {
-    return mask == 0 ? std::array<std::size_t, 2>{0, 0}
-                     : std::array<std::size_t, 2>{std::size_t(3) * static_cast<std::size_t>(std::countr_zero(mask)),
-                                                  std::size_t(3) * (64 - static_cast<std::size_t>(std::countl_zero(mask)))};
-}
-
 // Y_k is zero on the rows of the blocks dof k does not reach, so both the sweep's steps and W's
 // terms run over one contiguous span of rows, from k's first block to its last (any block
 // between that k does not reach adds zeros): no loop over the blocks, vectorised. (Measured,
@@ -58,15 +47,28 @@ constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chain
         const auto [first, last] = row_span(R.reach[k]);
         for (std::size_t r = first; r < last; ++r) out.Y[i][r] -= l * out.Y[k][r];
     });
-    // W: D_k⁻¹ y_k y_kᵀ on the span of dof k's rows
+    // W: D_k⁻¹ y_k y_kᵀ on the span of dof k's rows, a body's dofs together (they reach the same
+    // blocks): each row of W loaded and stored once a body, not once a dof (measured, a grasp's
+    // 24 rows, its cube's six dofs on all: fill_delassus 535 → 400 ns; Solo 12's 780 → 560 ns)
     for (std::size_t r = 0; r < n; ++r) out.W[r].fill(T(0));  // (whole rows: stores of a known length, no call per row)
-    for (std::size_t k = 0; k < Tree::nv; ++k) {
-        const auto [first, last] = row_span(R.reach[k]);
-        for (std::size_t r = first; r < last; ++r) {
-            const T a = f.inv_D[k] * out.Y[k][r];
-            for (std::size_t c = first; c < last; ++c) out.W[r][c] += a * out.Y[k][c];
-        }
-    }
+    [&]<std::size_t... B>(std::index_sequence<B...>) {
+        const auto body = [&]<std::size_t b>() {
+            constexpr std::size_t o = Tree::v_offset[b], dofs = Tree::nv_of[b];
+            if constexpr (dofs > 0) {
+                const auto [first, last] = row_span(R.reach[o]);
+                for (std::size_t r = first; r < last; ++r) {
+                    std::array<T, dofs> a;
+                    for (std::size_t j = 0; j < dofs; ++j) a[j] = f.inv_D[o + j] * out.Y[o + j][r];
+                    for (std::size_t c = first; c < last; ++c) {
+                        T w = out.W[r][c];
+                        for (std::size_t j = 0; j < dofs; ++j) w += a[j] * out.Y[o + j][c];
+                        out.W[r][c] = w;
+                    }
+                }
+            }
+        };
+        (body.template operator()<B>(), ...);
+    }(std::make_index_sequence<Tree::size>{});
 }
 
 template <class T, std::size_t Capacity>

@@ -87,12 +87,13 @@ template <class T>
         if (e != p1 && linear3::dot(d, d) > far) far = linear3::dot(d, d), p2 = e;
     }
     const vec3<T> base = linear3::sub(cand[p2].point_b, cand[p1].point_b);
-    const auto area = [&](std::size_t e) { return linear3::dot(normal, linear3::cross(base, linear3::sub(cand[e].point_b, cand[p1].point_b))); };
     std::size_t p3 = nc, p4 = nc;
+    T most = T(0), least = T(0);  // the signed areas of p3's and p4's triangles
     for (std::size_t e = 0; e < nc; ++e) {
         if (e == p1 || e == p2) continue;
-        if (p3 == nc || area(e) > area(p3)) p3 = e;
-        if (p4 == nc || area(e) < area(p4)) p4 = e;
+        const T area = linear3::dot(normal, linear3::cross(base, linear3::sub(cand[e].point_b, cand[p1].point_b)));
+        if (p3 == nc || area > most) p3 = e, most = area;
+        if (p4 == nc || area < least) p4 = e, least = area;
     }
     const auto at = [](std::size_t e) { return static_cast<std::uint8_t>(e); };
     return {{at(p1), at(p2), at(p3), at(p4)}, p4 != p3 ? std::size_t(4) : std::size_t(3)};

@@ -146,11 +146,10 @@ constexpr void rows_of(const chains::algorithm_detail::tree_factor<Tree, T>& f, 
                        const constraint_rows<Tree, T, Capacity>& R, const delassus_parts<Tree, T, Capacity>& P,
                        std::array<T, 3 * Capacity>& out) noexcept {
     out.fill(T(0));
-    for (std::size_t k = 0; k < Tree::nv; ++k) {
+    for (std::size_t k = 0; k < Tree::nv; ++k) {  // (Y_k is zero off its blocks: over their span, delassus.hpp)
         const T c = f.inv_D[k] * z[k];
-        each_block(R.reach[k], [&](std::size_t p) {
-            for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) out[r] += P.Y[k][r] * c;
-        });
+        const auto [first, last] = row_span(R.reach[k]);
+        for (std::size_t r = first; r < last; ++r) out[r] += P.Y[k][r] * c;
     }
 }
 
@@ -234,10 +233,10 @@ constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tre
         }
     }
     if (report.error != error_code::none) return rank;
-    for (std::size_t k = 0; k < Tree::nv; ++k)
-        each_block(R.reach[k], [&](std::size_t p) {
-            for (std::size_t r = 3 * p; r < 3 * p + 3; ++r) z[k] += P.Y[k][r] * force[r];
-        });
+    for (std::size_t k = 0; k < Tree::nv; ++k) {
+        const auto [first, last] = row_span(R.reach[k]);
+        z[k] += dot_in_parts(P.Y[k].data() + first, force.data() + first, last - first);
+    }
     chains::algorithm_detail::lower_sweep(f, z.data());
     return rank;
 }

@@ -65,11 +65,6 @@ struct paths {
 };
 }  // namespace rows_detail
 
-// The blocks of a mask, as bit indices, lowest first.
-template <class F>
-constexpr void each_block(std::uint64_t mask, F&& f) noexcept {
-    for (; mask != 0; mask &= mask - 1) f(static_cast<std::size_t>(std::countr_zero(mask)));
-}
 // The rows from the first block of a mask to the end of its last: [3 lowest, 3 (highest + 1)).
 [[nodiscard]] constexpr std::array<std::size_t, 2> row_span(std::uint64_t mask) noexcept {
     return mask == 0 ? std::array<std::size_t, 2>{0, 0}

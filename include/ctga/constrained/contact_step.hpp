@@ -122,10 +122,13 @@ class contact_stepper {
         }
         if (report.error != error_code::none) return report;
         // 3. the solve, warm-started by key
-        for (std::size_t i = 0; i < count_; ++i) {
+        for (std::size_t i = 0; i < count_; ++i) {  // (keys are unique; a block is most often where it was last step: looked for from there)
             vec3<T> r{};
-            for (std::size_t j = 0; j < last_count_; ++j)
-                if (last_keys_[j] == keys_[i]) r = {last_[3 * j], last_[3 * j + 1], last_[3 * j + 2]};
+            for (std::size_t n = 0; n < last_count_; ++n)
+                if (const std::size_t j = (i + n) % last_count_; last_keys_[j] == keys_[i]) {
+                    r = {last_[3 * j], last_[3 * j + 1], last_[3 * j + 2]};
+                    break;
+                }
             for (std::size_t a = 0; a < 3; ++a) result_.impulse[3 * i + a] = r[a];
         }
         impulse_dynamics(m, q, qd, tau, blocks_, settings.step, limits.damping, settings.solve, result_, std::span<T>(scratch_), &X);

@@ -203,6 +203,47 @@ TEST_CASE("constrained forward dynamics against the dense KKT system, and the De
         for (std::size_t i = 0; i < 12; ++i)
             for (std::size_t j = 0; j < 12; ++j) Wc(Eigen::Index(i), Eigen::Index(j)) = W.W[i][j];
         CHECK(w("W", (Wc - Wref).lpNorm<Eigen::Infinity>() / std::max(1.0, Wref.lpNorm<Eigen::Infinity>())) < 1e-12);
+        // the operator the sweeps use without W (u_i = q_i + (Y s)_i, s = D⁻¹ Yᵀ r kept by
+        // apply): its blocks and velocities against W_ref r + q, before and after changes of r
+        {
+            namespace ad = ch::algorithm_detail;
+            const auto f = ad::factor_tree<walker>(ch::crba(c.m, c.q));
+            cn::tree_motion<walker, double> g(ctga::uninitialized);
+            fill_tree_motion(g, c.m, c.q, c.qd);
+            cn::constraint_rows<walker, double, 6> R;
+            cn::fill_rows(R, g, c.C, c.q, c.qd);
+            cn::delassus_parts<walker, double, 6> P;
+            cn::fill_sweep(P, f, R);
+            std::mt19937_64 rng(seed + 100);
+            std::uniform_real_distribution<double> u(-1.0, 1.0);
+            std::array<double, 12> qv{}, r{};
+            for (std::size_t i = 0; i < 12; ++i) qv[i] = u(rng), r[i] = u(rng);
+            cn::dynamics_detail::tree_delassus<walker, double, 6> D(P, f, R, std::span<const double>(qv.data(), 12), c.C.blocks(), 0.0, 1.0,
+                                                                    std::span<const double>(r.data(), 12));
+            const auto against = [&](const char* what) {
+                const VectorXd ref = Wref * vec(r, 12) + vec(qv, 12);
+                double worst_u = 0, worst_block = 0;
+                for (std::size_t i = 0; i < 4; ++i) {
+                    const ctga::vec3<double> ui = D.velocity(i, std::span<const double>(r.data(), 12));
+                    const ctga::mat3<double> A = D.block(i);
+                    for (std::size_t a = 0; a < 3; ++a) {
+                        worst_u = std::max(worst_u, std::abs(ui[a] - ref[Eigen::Index(3 * i + a)]));
+                        for (std::size_t b = 0; b < 3; ++b)
+                            worst_block = std::max(worst_block, std::abs(A[a][b] - Wref(Eigen::Index(3 * i + a), Eigen::Index(3 * i + b))));
+                    }
+                }
+                const double scale = std::max(1.0, ref.lpNorm<Eigen::Infinity>());
+                CHECK(w(what, worst_u / scale) < 1e-12);
+                CHECK(w("W's diagonal blocks without W", worst_block / std::max(1.0, Wref.lpNorm<Eigen::Infinity>())) < 1e-12);
+            };
+            against("W r + q without W, at the warm start");
+            for (std::size_t i : {2u, 0u, 3u}) {
+                const ctga::vec3<double> dr{u(rng), u(rng), u(rng)};
+                for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] += dr[a];
+                D.apply(i, dr);
+            }
+            against("W r + q without W, after three blocks' changes");
+        }
     }
 }
 

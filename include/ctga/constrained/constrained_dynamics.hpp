@@ -22,7 +22,9 @@
 #pragma once
 
 #include <array>
+#include <bit>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
 #include <span>
 
@@ -104,14 +106,12 @@ constexpr std::size_t semidefinite_solve(const std::array<std::array<T, N>, N>& 
     return kept;
 }
 
-// The dense W of constraints/ (contact_problem.hpp's delassus_operator) with each block's kind:
-// point and orientation blocks bilateral (their 3 × 3 regularised, above), a limit's row bounded
-// below by 0, a joint friction's row by ± its bound (times `scale`: 1 for forces, the step for
-// impulses), the limit's and friction's empty rows bounded to 0.
-template <class T, std::size_t N>
-struct blocks_delassus {
-    const std::array<std::array<T, N>, N>& W;
-    std::span<const T> q;
+// The conditions of each block's kind (contact_problem.hpp's optional members): point and
+// orientation blocks bilateral (their 3 × 3 regularised, above), a limit's row bounded below by 0,
+// a joint friction's row by ± its bound (times `scale`: 1 for forces, the step for impulses), the
+// limit's and friction's empty rows bounded to 0.
+template <class T>
+struct block_conditions {
     std::span<const constraint_block<T>> kinds;
     T regularised, scale;
 
@@ -126,18 +126,81 @@ struct blocks_delassus {
         return kinds[i].kind == block_kind::joint_friction ? std::array<vec3<T>, 2>{vec3<T>{-f, T(0), T(0)}, vec3<T>{f, T(0), T(0)}}
                                                            : std::array<vec3<T>, 2>{vec3<T>{}, vec3<T>{inf, T(0), T(0)}};
     }
+};
+
+// W = Y D⁻¹ Yᵀ as constraints/ uses it (contact_problem.hpp's delassus_operator), without forming
+// W: the dofs' share s = D⁻¹ Yᵀ r is kept as r changes, so that W r = Y s; block i's velocity is
+// q_i + Σ_k Y(i, k) s_k over the dofs reaching block i only, and a change dr of r_i adds
+// D_k⁻¹ Y(i, k)ᵀ dr to s_k for those dofs. Only W's diagonal blocks are formed. A sweep costs
+// each block twice its reach (a grasp's finger block: 7 dofs) where W's rows cost the rows in use
+// (24), and W's m² entries are not summed (measured, steps: a grasp's 3.19 → 2.80 µs, the humanoid's
+// 18.5 → 16.5 µs).
+template <class Tree, class T, std::size_t Capacity>
+struct tree_delassus : block_conditions<T> {
+    static_assert(Tree::nv < 65536, "ctga::constrained: a tree of at most 65,535 dofs");
+    const delassus_parts<Tree, T, Capacity>& P;
+    const chains::algorithm_detail::tree_factor<Tree, T>& f;
+    std::span<const T> q;
+    std::array<mat3<T>, Capacity> diagonal;
+    std::array<T, Tree::nv> s;
+    std::array<std::size_t, Capacity + 1> first;            // block i's dofs: dofs[first[i], first[i + 1])
+    std::array<std::uint16_t, Capacity * Tree::nv> dofs;
+
+    // At the impulses r (the warm start); `redundancy` times W's largest diagonal entry
+    // regularises the bilateral blocks.
+    constexpr tree_delassus(const delassus_parts<Tree, T, Capacity>& parts, const chains::algorithm_detail::tree_factor<Tree, T>& factor,
+                            const constraint_rows<Tree, T, Capacity>& R, std::span<const T> qv, std::span<const constraint_block<T>> kinds,
+                            const T& redundancy, const T& scale, std::span<const T> r) noexcept
+        : block_conditions<T>{kinds, T(0), scale}, P(parts), f(factor), q(qv) {
+        const std::size_t m = kinds.size();
+        std::array<std::size_t, Capacity + 1> count{};
+        for (std::size_t k = 0; k < Tree::nv; ++k)
+            for (std::uint64_t mask = R.reach[k]; mask != 0; mask &= mask - 1) ++count[static_cast<std::size_t>(std::countr_zero(mask)) + 1];
+        first[0] = 0;
+        for (std::size_t i = 0; i < m; ++i) first[i + 1] = first[i] + count[i + 1], count[i + 1] = first[i];
+        for (std::size_t k = 0; k < Tree::nv; ++k)
+            for (std::uint64_t mask = R.reach[k]; mask != 0; mask &= mask - 1)
+                dofs[count[static_cast<std::size_t>(std::countr_zero(mask)) + 1]++] = static_cast<std::uint16_t>(k);
+        T largest = T(0);
+        for (std::size_t i = 0; i < m; ++i) {
+            mat3<T> A{};
+            for (std::size_t n = first[i]; n < first[i + 1]; ++n) {
+                const std::size_t k = dofs[n];
+                const T* y = &P.Y[k][3 * i];
+                for (std::size_t a = 0; a < 3; ++a)
+                    for (std::size_t b = a; b < 3; ++b) A[a][b] += f.inv_D[k] * y[a] * y[b];
+            }
+            A[1][0] = A[0][1], A[2][0] = A[0][2], A[2][1] = A[1][2];
+            diagonal[i] = A;
+            for (std::size_t a = 0; a < 3; ++a) largest = A[a][a] > largest ? A[a][a] : largest;
+        }
+        this->regularised = redundancy * largest;
+        for (std::size_t k = 0; k < Tree::nv; ++k) {
+            const auto [begin, end] = row_span(R.reach[k]);
+            s[k] = f.inv_D[k] * dot_in_parts(P.Y[k].data() + begin, r.data() + begin, end - begin);
+        }
+    }
+
     [[nodiscard]] constexpr mat3<T> block(std::size_t i) const noexcept {
-        mat3<T> out;
-        for (std::size_t a = 0; a < 3; ++a)
-            for (std::size_t b = 0; b < 3; ++b) out[a][b] = W[3 * i + a][3 * i + b] + (a == b && bilateral(i) ? regularised : T(0));
+        mat3<T> out = diagonal[i];
+        if (this->bilateral(i))
+            for (std::size_t a = 0; a < 3; ++a) out[a][a] += this->regularised;
         return out;
     }
-    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T> r) const noexcept {
-        vec3<T> u;
-        for (std::size_t a = 0; a < 3; ++a) u[a] = q[3 * i + a] + dot_in_parts(W[3 * i + a].data(), r.data(), q.size());
+    [[nodiscard]] constexpr vec3<T> velocity(std::size_t i, std::span<const T>) const noexcept {
+        vec3<T> u{q[3 * i], q[3 * i + 1], q[3 * i + 2]};
+        for (std::size_t n = first[i]; n < first[i + 1]; ++n) {
+            const std::size_t k = dofs[n];
+            for (std::size_t a = 0; a < 3; ++a) u[a] += P.Y[k][3 * i + a] * s[k];
+        }
         return u;
     }
-    constexpr void apply(std::size_t, const vec3<T>&) const noexcept {}
+    constexpr void apply(std::size_t i, const vec3<T>& dr) noexcept {
+        for (std::size_t n = first[i]; n < first[i + 1]; ++n) {
+            const std::size_t k = dofs[n];
+            s[k] += f.inv_D[k] * (P.Y[k][3 * i] * dr[0] + P.Y[k][3 * i + 1] * dr[1] + P.Y[k][3 * i + 2] * dr[2]);
+        }
+    }
 };
 
 // J H⁻¹ b = Y D⁻¹ z for z = L⁻ᵀ b: each dof's D⁻¹ z_k spread over the rows of the blocks reaching it.
@@ -167,7 +230,7 @@ constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const tree_motio
                             const chains::joint_vector<Tree, T>& qd, const constraint_set<Tree, T, Capacity>& C,
                             const chains::algorithm_detail::tree_factor<Tree, T>& f, const std::array<T, Tree::nv>& z) noexcept {
     fill_rows<Bias>(x.R, g, C, q, qd);
-    fill_delassus(x.P, f, x.R);
+    fill_sweep(x.P, f, x.R);  // (W itself only where a solve needs it: solve_rows)
     rows_of(f, z, x.R, x.P, x.qv);
 }
 
@@ -185,12 +248,13 @@ constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const tree_motio
 // hundreds, as on a body lying on many contacts). Returns the rows kept (bilateral) or all rows.
 template <class Tree, class T, std::size_t Capacity>
 constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tree, T>& f, std::array<T, Tree::nv>& z,
-                                 const constraint_rows<Tree, T, Capacity>& R, const delassus_parts<Tree, T, Capacity>& P,
+                                 const constraint_rows<Tree, T, Capacity>& R, delassus_parts<Tree, T, Capacity>& P,
                                  const std::array<T, 3 * Capacity>& qv, const constraint_set<Tree, T, Capacity>& C,
                                  const constrained_settings<T>& settings, const T& scale, std::array<T, 3 * Capacity>& force,
                                  constraints::contact_report<T>& report, std::span<T> scratch = {}) noexcept {
     std::size_t rank = R.count;
     if (C.bilateral()) {
+        fill_w(P, f, R);
         rank = semidefinite_solve(P.W, R.count, qv, settings.redundancy, force);
         T sum = T(0);
         for (std::size_t r = 0; r < R.count; ++r) {
@@ -202,15 +266,15 @@ constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tre
         if (!is_finite(report.residual)) report.error = error_code::non_finite;
     } else {
         const std::size_t m = C.size(), n = R.count;
-        T largest = T(0);
-        for (std::size_t r = 0; r < n; ++r) largest = P.W[r][r] > largest ? P.W[r][r] : largest;
-        blocks_delassus<T, 3 * Capacity> D{P.W, std::span<const T>(qv.data(), n), C.blocks(), settings.redundancy * largest, scale};
+        tree_delassus<Tree, T, Capacity> D(P, f, R, std::span<const T>(qv.data(), n), C.blocks(), settings.redundancy, scale,
+                                           std::span<const T>(force.data(), n));
         std::array<T, Capacity> mu{};
         for (std::size_t i = 0; i < m; ++i) mu[i] = C.blocks()[i].mu;
         const bool polish = scratch.size() >= polish_scratch_size(Capacity);
         report = constraints::solve_contacts<T>(D, std::span<const T>(mu.data(), m), std::span<T>(force.data(), n), settings.solver,
                                                 polish ? scratch : std::span<T>{});
-        if (polish && report.error == error_code::none && !report.converged) {
+        if (polish && report.error == error_code::none && !report.converged) {  // (W formed for Newton only)
+            fill_w(P, f, R);
             const std::span<T> W = scratch.subspan(0, n * n), q = scratch.subspan(n * n, n), rest = scratch.subspan(n * n + n);
             std::array<unsigned char, Capacity> kind{};
             std::array<std::array<vec3<T>, 2>, Capacity> bounds{};

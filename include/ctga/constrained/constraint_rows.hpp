@@ -159,7 +159,7 @@ constexpr void fill_rows(constraint_rows<Tree, T, Capacity>& R, const tree_motio
         for (std::size_t r = 0; r < rows; ++r) column[r] = T(0);
     std::array<std::array<T, max_rows>, 6> line;  // ℓ by component: moment (x × e or e), then direction (e or 0)
     std::array<T, max_rows> rate;                 // J q̇ (local: the columns' stores cannot alias it)
-    for (std::size_t p = 0; p < C.size(); ++p) {
+    for (std::size_t p = 0; p < C.size() && p < Capacity; ++p) {  // (p < Capacity: what the set holds, said for GCC's bounds analysis)
         const constraint_block<T>& c = C.blocks()[p];
         const std::size_t r0 = 3 * p;
         const auto reach = [&](int body) {

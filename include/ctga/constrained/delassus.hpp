@@ -8,7 +8,9 @@
 // of rank-one terms D_k⁻¹ y_k y_kᵀ on the 3 × 3 blocks of the pairs of blocks reaching k: a foot's
 // leg costs its own block, the base every pair, a limb no block reaches nothing. The same factor gives J H⁻¹ (τ − C) = Y D⁻¹ L⁻ᵀ (τ − C) and, after
 // the solve, q̈ = L⁻¹ D⁻¹ (L⁻ᵀ (τ − C) + Yᵀ λ) (constrained_dynamics.hpp). (Measured, Solo 12's
-// four feet: the sums row by row, 1.5 µs; rank-one terms over all rows, 2.2 µs.)
+// four feet: the sums row by row, 1.5 µs; rank-one terms over all rows, 2.2 µs.) The sweeps of
+// the frictional solver need W only as W r = Y (D⁻¹ Yᵀ r) (constrained_dynamics.hpp's
+// tree_delassus): Y is filled alone (fill_sweep), W (fill_w) where a direct solve or Newton needs it.
 #pragma once
 
 #include <array>
@@ -37,8 +39,8 @@ struct delassus_parts {
 // between that k does not reach adds zeros): no loop over the blocks, vectorised. (Measured,
 // a grasp's 24 rows: 1,356 ns by blocks of three rows, 653 ns by spans.)
 template <class Tree, class T, std::size_t Capacity>
-constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chains::algorithm_detail::tree_factor<Tree, T>& f,
-                             const constraint_rows<Tree, T, Capacity>& R) noexcept {
+constexpr void fill_sweep(delassus_parts<Tree, T, Capacity>& out, const chains::algorithm_detail::tree_factor<Tree, T>& f,
+                          const constraint_rows<Tree, T, Capacity>& R) noexcept {
     const std::size_t n = R.count;  // (the rows in use: the rest of Y and W is left as it was)
     for (std::size_t k = 0; k < Tree::nv; ++k)
         for (std::size_t r = 0; r < n; ++r) out.Y[k][r] = R.columns[k][r];
@@ -47,10 +49,14 @@ constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chain
         const auto [first, last] = row_span(R.reach[k]);
         for (std::size_t r = first; r < last; ++r) out.Y[i][r] -= l * out.Y[k][r];
     });
-    // W: D_k⁻¹ y_k y_kᵀ on the span of dof k's rows, a body's dofs together (they reach the same
-    // blocks): each row of W loaded and stored once a body, not once a dof (measured, a grasp's
-    // 24 rows, its cube's six dofs on all: fill_delassus 535 → 400 ns; Solo 12's 780 → 560 ns)
-    for (std::size_t r = 0; r < n; ++r) out.W[r].fill(T(0));  // (whole rows: stores of a known length, no call per row)
+}
+// W from Y (fill_sweep's): D_k⁻¹ y_k y_kᵀ on the span of dof k's rows, a body's dofs together
+// (they reach the same blocks): each row of W loaded and stored once a body, not once a dof
+// (measured, a grasp's 24 rows, its cube's six dofs on all: 535 → 400 ns; Solo 12's 780 → 560 ns).
+template <class Tree, class T, std::size_t Capacity>
+constexpr void fill_w(delassus_parts<Tree, T, Capacity>& out, const chains::algorithm_detail::tree_factor<Tree, T>& f,
+                      const constraint_rows<Tree, T, Capacity>& R) noexcept {
+    for (std::size_t r = 0; r < R.count; ++r) out.W[r].fill(T(0));  // (whole rows: stores of a known length, no call per row)
     [&]<std::size_t... B>(std::index_sequence<B...>) {
         const auto body = [&]<std::size_t b>() {
             constexpr std::size_t o = Tree::v_offset[b], dofs = Tree::nv_of[b];
@@ -69,6 +75,12 @@ constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chain
         };
         (body.template operator()<B>(), ...);
     }(std::make_index_sequence<Tree::size>{});
+}
+template <class Tree, class T, std::size_t Capacity>
+constexpr void fill_delassus(delassus_parts<Tree, T, Capacity>& out, const chains::algorithm_detail::tree_factor<Tree, T>& f,
+                             const constraint_rows<Tree, T, Capacity>& R) noexcept {
+    fill_sweep(out, f, R);
+    fill_w(out, f, R);
 }
 
 template <class T, std::size_t Capacity>

@@ -205,6 +205,24 @@ TEST_CASE("The URDF's collision geometry: its shapes on their links' bodies, whe
     }
     std::printf("URDF collision geometry: 6 shapes, placements vs the links' frames %.1e\n", off);
     CHECK(off < 1e-15);
+    // grown for a shape the user adds (room for two more, and a kind the URDF has not: a cylinder)
+    using grown_shape = co::shape<co::sphere<double>, co::box<double>, co::convex_hull<double, 8>, co::cylinder<double>>;
+    auto grown = cn::robot_geometry<quadruped::tree, grown_shape, double, 8>::from(*geometry);
+    REQUIRE(grown);
+    REQUIRE(grown->shapes().size() == 6);
+    for (std::size_t i = 0; i < 6; ++i) {
+        CHECK(grown->shapes()[i].body == shapes[i].body);
+        CHECK(grown->shapes()[i].at.t == shapes[i].at.t);
+        CHECK(grown->shapes()[i].shape.index() == shapes[i].shape.index());
+    }
+    CHECK(std::get<co::box<double>>(grown->shapes()[0].shape).half == ctga::vec3<double>{0.25, 0.1, 0.05});
+    for (int a = 0; a < static_cast<int>(quadruped::tree::size); ++a)
+        for (int b = 0; b < static_cast<int>(quadruped::tree::size); ++b) CHECK(grown->collides(a, b) == geometry->collides(a, b));
+    auto with = *grown;
+    CHECK(with.attach(m, ch::frame<"trunk">, *co::make_cylinder(0.05, 0.02)) == ctga::error_code::none);
+    CHECK(with.shapes().size() == 7);
+    CHECK(std::holds_alternative<co::cylinder<double>>(with.shapes()[6].shape));
+    CHECK(cn::robot_geometry<quadruped::tree, grown_shape, double, 5>::from(*geometry).error == ctga::error_code::capacity_exceeded);
 }
 
 namespace {

@@ -15,6 +15,8 @@
 #include <array>
 #include <cstddef>
 #include <span>
+#include <type_traits>
+#include <variant>
 
 #include "ctga/chains/frames.hpp"
 #include "ctga/chains/tree.hpp"
@@ -64,6 +66,21 @@ class robot_geometry {
         return attach(on::body, s, compose(chains::frame_detail::placement(m, f), at));
     }
 
+    // The same shapes and exclusions with room for more (Capacity ≥ the other's count) or more
+    // shape kinds (each of the other's kinds one of Shape's alternatives): a URDF's make_geometry()
+    // grown by the shapes a user adds. Refused: capacity_exceeded.
+    template <class Other, std::size_t N>
+    [[nodiscard]] static constexpr checked<robot_geometry> from(const robot_geometry<Tree, Other, T, N>& other) noexcept {
+        robot_geometry out;
+        if (other.shapes().size() > Capacity) return {out, error_code::capacity_exceeded};
+        for (const auto& s : other.shapes()) {
+            if constexpr (std::is_same_v<Other, Shape>) out.shapes_[out.count_++] = {s.shape, s.body, s.at};
+            else out.shapes_[out.count_++] = {std::visit([](const auto& kind) { return Shape(kind); }, s.shape), s.body, s.at};
+        }
+        out.excluded_ = other.excluded_;
+        return {out, error_code::none};
+    }
+
     // Bodies a and b never tested against each other (beyond parent and child, always skipped).
     constexpr error_code exclude(int a, int b) noexcept {
         if (a < 0 || b < 0 || a >= static_cast<int>(Tree::size) || b >= static_cast<int>(Tree::size)) return error_code::bad_index;
@@ -77,6 +94,8 @@ class robot_geometry {
     }
 
    private:
+    template <class, class, class, std::size_t>
+    friend class robot_geometry;
     std::array<attached, Capacity> shapes_{};
     std::size_t count_ = 0;
     std::array<std::array<bool, Tree::size>, Tree::size> excluded_{};

@@ -11,8 +11,9 @@
 // velocity about e. The dofs on both paths move both bodies alike and cancel; the rows visit
 // each body's path only (tables from the tree's type). Jᵀ λ applies the force λ e along ℓ to A
 // and its reaction to B: one line, so the pair's wrenches balance. With S = (ω, v) the pairing is
-// ⟨ℓ, S⟩ = e · (v + ω × x) (⟨(e, 0), S⟩ = e · ω): each dof's velocity at x is computed once for
-// the block's three rows, and each body's acceleration at x once for their biases.
+// ⟨ℓ, S⟩ = (x × e) · ω + e · v = e · (v + ω × x) (⟨(e, 0), S⟩ = e · ω): six multiply-adds a row
+// from its line's six numbers (fill_rows, below), and each body's acceleration at x once a block
+// for the biases.
 //
 // J̇ q̇, the rows' acceleration at q̈ = 0 (the bias of the constrained dynamics): with the world
 // velocities V_i = V_λ(i) + Σ_k S_k q̇_k and the accelerations at q̈ = 0, A_i = A_λ(i) + Σ_k [V_i, S_k] q̇_k

@@ -426,6 +426,28 @@ constexpr contact_report<T> solve_contacts(D& W, std::span<const T> mu, std::spa
         }
         if (report.sweeps % every == 0 || report.sweeps == settings.max_sweeps) report.residual = residual();
     }
+    // the conjugate step can leave an impulse just outside its cone or bounds (a contact lifting
+    // off: r_n = −4e-16): each such impulse is returned projected on its set, and the residual is
+    // that of the impulses returned
+    if (conjugate && is_finite(report.residual)) {
+        bool moved = false;
+        for (std::size_t i = 0; i < m; ++i) {
+            if (is_bilateral(W, i)) continue;
+            const vec3<T> ri{r[3 * i], r[3 * i + 1], r[3 * i + 2]};
+            vec3<T> in = ri;
+            if (is_bounded(W, i)) {
+                const std::array<vec3<T>, 2> b = bounds_of<T>(W, i);
+                for (std::size_t a = 0; a < 3; ++a) in[a] = clamp_to(ri[a], b[0][a], b[1][a]);
+            } else {
+                in = project_on_cone(ri, mu[i]);
+            }
+            if (in == ri) continue;
+            moved = true;
+            for (std::size_t a = 0; a < 3; ++a) r[3 * i + a] = in[a];
+            W.apply(i, linear3::sub(in, ri));
+        }
+        if (moved) report.residual = residual();
+    }
     report.converged = report.residual <= settings.tolerance;
     if (!is_finite(report.residual)) report.error = error_code::non_finite;
     return report;

@@ -234,6 +234,18 @@ constexpr void fill_problem(rows_problem<Tree, T, Capacity>& x, const tree_motio
     rows_of(f, z, x.R, x.P, x.qv);
 }
 
+// z ← L⁻¹ D⁻¹ (z + Yᵀ λ): H⁻¹ (b + Jᵀ λ) for z = L⁻ᵀ b, the rows' forces λ added.
+template <class Tree, class T, std::size_t Capacity>
+constexpr void add_forces(const chains::algorithm_detail::tree_factor<Tree, T>& f, std::array<T, Tree::nv>& z,
+                          const constraint_rows<Tree, T, Capacity>& R, const delassus_parts<Tree, T, Capacity>& P,
+                          std::span<const T> force) noexcept {
+    for (std::size_t k = 0; k < Tree::nv; ++k) {
+        const auto [first, last] = row_span(R.reach[k]);
+        z[k] += dot_in_parts(P.Y[k].data() + first, force.data() + first, last - first);
+    }
+    chains::algorithm_detail::lower_sweep(f, z.data());
+}
+
 // Scratch for solve_rows' Newton finish on a set of up to Capacity blocks: W and q compact, then
 // newton_polish.hpp's own.
 [[nodiscard]] constexpr std::size_t polish_scratch_size(std::size_t capacity) noexcept {
@@ -297,11 +309,7 @@ constexpr std::size_t solve_rows(const chains::algorithm_detail::tree_factor<Tre
         }
     }
     if (report.error != error_code::none) return rank;
-    for (std::size_t k = 0; k < Tree::nv; ++k) {
-        const auto [first, last] = row_span(R.reach[k]);
-        z[k] += dot_in_parts(P.Y[k].data() + first, force.data() + first, last - first);
-    }
-    chains::algorithm_detail::lower_sweep(f, z.data());
+    add_forces(f, z, R, P, std::span<const T>(force));
     return rank;
 }
 

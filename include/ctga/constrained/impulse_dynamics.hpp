@@ -54,44 +54,51 @@ struct impulse_result {
     std::size_t rank = 0;
 };
 
-// q̇⁺ and r over a step h (above); `out.impulse` holds the warm start on entry (zeros, or the last
-// step's impulses of the same blocks); with scratch of dynamics_detail::polish_scratch_size(Capacity)
-// numbers, a solve the sweeps leave unconverged is finished by Newton (constrained_dynamics.hpp's
-// solve_rows). `maps`, when given, are the joints' maps at q (chains' fill_joint_maps: the
-// stepper's, computed for collision), else computed here. Refused: non-finite inputs, h < 0
-// (non_finite), negative damping (negative_limit), a massless subtree.
+// A step's problem before its solve: the factor of H + hB, z = L⁻ᵀ h (τ − C − B q̇), the rows, Y
+// and q = J q̇ + J (H + hB)⁻¹ h (τ − C − B q̇) + b (above). After the impulses r are found (here by
+// solve_rows; robot_world.hpp solves them with a world's bodies), q̇⁺ = q̇ + L⁻¹ D⁻¹ (z + Yᵀ r)
+// (dynamics_detail::add_forces).
 template <class Tree, class T, std::size_t Capacity>
-constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd,
-                                const chains::joint_vector<Tree, T>& tau, const constraint_set<Tree, T, Capacity>& C, const T& h,
-                                const chains::joint_vector<Tree, T>& damping, const impulse_settings<T>& settings,
-                                impulse_result<Tree, T, Capacity>& out, std::span<T> scratch = {},
-                                const chains::algorithm_detail::joint_maps<Tree, T>* maps = nullptr) noexcept {
+struct impulse_problem {
+    chains::algorithm_detail::tree_factor<Tree, T> f;
+    std::array<T, Tree::nv> z;
+    dynamics_detail::rows_problem<Tree, T, Capacity> x;
+};
+
+// The problem of a step h at (q, q̇); `maps`, when given, are the joints' maps at q (chains'
+// fill_joint_maps: the stepper's, computed for collision), else computed here. Refused:
+// non-finite inputs, h < 0 (non_finite), negative damping (negative_limit), a massless subtree.
+template <class Tree, class T, std::size_t Capacity>
+constexpr error_code fill_impulse_problem(impulse_problem<Tree, T, Capacity>& p, const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q,
+                                          const chains::joint_vector<Tree, T>& qd, const chains::joint_vector<Tree, T>& tau,
+                                          const constraint_set<Tree, T, Capacity>& C, const T& h, const chains::joint_vector<Tree, T>& damping,
+                                          const impulse_settings<T>& settings, const chains::algorithm_detail::joint_maps<Tree, T>* maps = nullptr) noexcept {
     static_assert(!Tree::has_mimic, "ctga::constrained: trees with mimic joints are not supported yet (their H is not the tree factor's)");
     using namespace chains::algorithm_detail;
-    out.error = error_code::none;
-    if (!dynamics_detail::finite_state(q, qd, tau, damping) || !is_finite(h) || h < T(0)) return void(out.error = error_code::non_finite);
+    if (!dynamics_detail::finite_state(q, qd, tau, damping) || !is_finite(h) || h < T(0)) return error_code::non_finite;
     for (const T& b : damping)
-        if (b < T(0)) return void(out.error = error_code::negative_limit);
+        if (b < T(0)) return error_code::negative_limit;
     joint_maps<Tree, T> own;
     if (!maps) fill_joint_maps(own, m, q);
     const joint_maps<Tree, T>& X = maps ? *maps : own;
     // H + hB = Lᵀ D L; z = L⁻ᵀ h (τ − C − B q̇)
-    tree_factor<Tree, T> f{mass_matrix(m, q, X), {}, true};
+    tree_factor<Tree, T>& f = p.f;
+    f = {mass_matrix(m, q, X), {}, true};
     for (std::size_t k = 0; k < Tree::nv; ++k) f.LD[k][k] += h * damping[k];
     factor_tree(f);
-    if (!f.positive_definite) return void(out.error = error_code::massless_subtree);
+    if (!f.positive_definite) return error_code::massless_subtree;
     tree_motion<Tree, T> g(uninitialized);
     fill_tree_motion(g, m, q, qd, X);
-    std::array<T, Tree::nv> z{};
+    std::array<T, Tree::nv>& z = p.z;
+    z = {};
     if (h > T(0)) {
         z = bias_forces(m, g);  // C, from the world motion the rows read (constraint_rows.hpp)
         for (std::size_t k = 0; k < Tree::nv; ++k) z[k] = h * (tau[k] - z[k] - damping[k] * qd[k]);
         transposed_sweep(f, [&](std::size_t k, std::size_t i, const T& l) { z[i] -= l * z[k]; });
     }
     // the rows, W, and q = J q̇ + J (H + hB)⁻¹ h (τ − C − B q̇) + b
-    dynamics_detail::rows_problem<Tree, T, Capacity> x;
-    dynamics_detail::fill_problem<false>(x, g, q, qd, C, f, z);  // (no J̇ q̇ at the velocity level)
-    auto& [R, P, qv] = x;
+    dynamics_detail::fill_problem<false>(p.x, g, q, qd, C, f, z);  // (no J̇ q̇ at the velocity level)
+    auto& [R, P, qv] = p.x;
     const T beta = settings.recovery;
     for (std::size_t r = 0; r < R.count; ++r) {
         qv[r] += R.rate[r];
@@ -104,10 +111,26 @@ constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::c
         if (normal) qv[r] += phi > T(0) ? phi / h : (push > fastest ? push : fastest);
         else if (held) qv[r] += beta * phi / h;
     }
+    return error_code::none;
+}
+
+// q̇⁺ and r over a step h (above); `out.impulse` holds the warm start on entry (zeros, or the last
+// step's impulses of the same blocks); with scratch of dynamics_detail::polish_scratch_size(Capacity)
+// numbers, a solve the sweeps leave unconverged is finished by Newton (constrained_dynamics.hpp's
+// solve_rows). Refused: as fill_impulse_problem.
+template <class Tree, class T, std::size_t Capacity>
+constexpr void impulse_dynamics(const chains::model<Tree, T>& m, const chains::configuration<Tree, T>& q, const chains::joint_vector<Tree, T>& qd,
+                                const chains::joint_vector<Tree, T>& tau, const constraint_set<Tree, T, Capacity>& C, const T& h,
+                                const chains::joint_vector<Tree, T>& damping, const impulse_settings<T>& settings,
+                                impulse_result<Tree, T, Capacity>& out, std::span<T> scratch = {},
+                                const chains::algorithm_detail::joint_maps<Tree, T>* maps = nullptr) noexcept {
+    impulse_problem<Tree, T, Capacity> p;
+    if ((out.error = fill_impulse_problem(p, m, q, qd, tau, C, h, damping, settings, maps)) != error_code::none) return;
+    auto& [R, P, qv] = p.x;
     for (std::size_t r = R.count; r < 3 * Capacity; ++r) out.impulse[r] = T(0);
-    out.rank = dynamics_detail::solve_rows(f, z, R, P, qv, C, settings.rows, h, out.impulse, out.report, scratch);
+    out.rank = dynamics_detail::solve_rows(p.f, p.z, R, P, qv, C, settings.rows, h, out.impulse, out.report, scratch);
     if (out.report.error != error_code::none) return void(out.error = out.report.error);
-    for (std::size_t k = 0; k < Tree::nv; ++k) out.qd[k] = qd[k] + z[k];
+    for (std::size_t k = 0; k < Tree::nv; ++k) out.qd[k] = qd[k] + p.z[k];
 }
 
 // The impulse at an impact (h = 0, above): q̇⁺ just after and the impulses r of C's blocks.

@@ -318,6 +318,7 @@ public:
           kind_(settings.polish_limit, storage), bounds_(settings.polish_limit, storage), order_(rows_for(capacity), storage),
           part_start_(max_partitions + 2, storage), phase_start_(3, storage),
           part_of_row_(rows_for(capacity), storage), slab_of_body_(total_, storage), ranked_(total_, storage), partial_(rows_for(capacity), storage),
+          by_after_(total_, 0, storage),
           crew_(settings.threads),
           broadphase_(total_ > 0 ? total_ : 1, capacity.pairs, settings.fat_margin, storage) {
         settings_.partitions = settings_.partitions < 1 ? 1 : (settings_.partitions > max_partitions ? max_partitions : settings_.partitions);
@@ -495,25 +496,38 @@ public:
             if (s.contact_hertz < T(0) || s.contact_damping < T(0) || s.joint_damping < T(0) || !(s.push_speed > T(0)))
                 return report.error = error_code::negative_limit, report;
         }
-        for_each_body([&](auto&, std::size_t, std::size_t b) { before_pose_[b] = pose_[b], before_[b] = velocity_[b]; });
-        if ((report.error = collide(h)) != error_code::none) return report;
-        order_manifolds();
-        if ((report.error = build_rows(h, report)) != error_code::none) return report;
-        if (settings_.substeps == 0) partition();  // (the soft step's rows go in colours instead: soft_solve)
-        warm_start();
+        if ((report.error = begin(h, report)) != error_code::none) return report;
         if (settings_.substeps > 0) soft_solve(h, report);
         else solve(h, report);
-        integrate(h);
-        if (!state_finite()) {
-            for_each_body([&](auto&, std::size_t, std::size_t b) { pose_[b] = before_pose_[b], velocity_[b] = before_[b]; });
-            report.error = error_code::non_finite;
-            return report;
-        }
-        store_impulses();
+        report.error = end(h);
         return report;
     }
 
     // ---- the stages ----
+
+    // The step up to its solve: the state kept (restore), collide, the manifolds in order,
+    // build_rows, partition, warm_start.
+    error_code begin(const T& h, step_report<T>& report) noexcept {
+        for_each_body([&](auto&, std::size_t, std::size_t b) { before_pose_[b] = pose_[b], before_[b] = velocity_[b]; });
+        if (const error_code e = collide(h); e != error_code::none) return e;
+        order_manifolds();
+        if (const error_code e = build_rows(h, report); e != error_code::none) return e;
+        if (settings_.substeps == 0) partition();  // (the soft step's rows go in colours instead: soft_solve)
+        warm_start();
+        return error_code::none;
+    }
+    // The step after its solve: integrate and store_impulses, or, if the state went non-finite,
+    // restore (and non_finite).
+    error_code end(const T& h) noexcept {
+        integrate(h);
+        if (!state_finite()) return restore(), error_code::non_finite;
+        store_impulses();
+        return error_code::none;
+    }
+    // The poses and velocities the step began with.
+    void restore() noexcept {
+        for_each_body([&](auto&, std::size_t, std::size_t b) { pose_[b] = before_pose_[b], velocity_[b] = before_[b]; });
+    }
 
     // The bodies' maps and boxes (grown by how far they may move in h), the broadphase's pairs
     // and every static shape a body's box meets; their manifolds, within the margin plus both
@@ -798,6 +812,10 @@ public:
             if (small && !report.contact.converged && report.contact.error == error_code::none) polish(W, r, report.contact);
             report.contact.polish_steps += steps;
         }
+        correct(h, report);
+    }
+    // The position correction (above) after the impulses: on the velocities they left.
+    void correct(const T& h, step_report<T>& report) noexcept {
         // (each row's flag in partial_, read in row order after)
         at_once(contacts_, [&](std::size_t c) {
             correction_[3 * c] = correction_[3 * c + 1] = correction_[3 * c + 2] = T(0);
@@ -1066,14 +1084,17 @@ public:
         report.polish_steps += newton.sweeps;
     }
 
-    // Poses from the average of the velocities before and after the jump, plus the pseudo-velocity.
-    // The kinematic shapes move as prescribed, by their own velocity.
+    // Poses from the average of the velocities before and after the jump, plus the pseudo-velocity
+    // (a body marked by move_by_velocity_after: from the velocity after). The kinematic shapes move
+    // as prescribed, by their own velocity.
     void integrate(const T& h) noexcept {
         for_each_body_at_once([&](auto&, std::size_t, std::size_t b) {
             screw<T> m;
+            const T w = by_after_[b] ? T(0) : T(0.5);  // the weight of the velocity before
             for (std::size_t c = 0; c < 6; ++c)
-                m[c] = settings_.substeps > 0 ? displacement_[b][c] / h : (before_[b][c] + velocity_[b][c]) / T(2) + pseudo_[b][c];
+                m[c] = settings_.substeps > 0 ? displacement_[b][c] / h : w * before_[b][c] + (T(1) - w) * velocity_[b][c] + pseudo_[b][c];
             pose_[b] = advance(pose_[b], map_[b].t, m, h);
+            by_after_[b] = 0;
         });
         for (std::size_t s = 0; s < static_shape_.size(); ++s) {
             if (!static_moving_[s]) continue;
@@ -1091,6 +1112,38 @@ public:
             stored_[c - blocks_] = {keys_[c], r, local_point(c)};
         }
         stored_count_ = contacts_ - blocks_;  // (in key order: build_rows went through the manifolds so)
+    }
+
+    // ---- a stepper's view of the stages (constrained/robot_world.hpp: a robot's rows solved with these) ----
+
+    // The rows a step may have: the contact points and the joints' blocks (at most three a joint).
+    static constexpr std::size_t rows_for(const world_capacity& c) noexcept { return c.contacts + 3 * c.joints; }
+
+    // The step's rows (the joints' blocks, then the contacts), their impulses and friction
+    // coefficients, the bodies' velocities and mobilities (build_rows': in the world's axes at each centre).
+    [[nodiscard]] std::span<const constraints::contact_row<T>> rows() const noexcept { return {rows_.data(), contacts_}; }
+    [[nodiscard]] std::span<T> impulses() noexcept { return {impulse_.data(), 3 * contacts_}; }
+    [[nodiscard]] std::span<const T> friction() const noexcept { return {mu_.data(), contacts_}; }
+    [[nodiscard]] std::span<screw<T>> velocities() noexcept { return {velocity_.data(), total_}; }
+    [[nodiscard]] std::span<const constraints::mobility<T>> mobilities() const noexcept { return {mobility_.data(), total_}; }
+    [[nodiscard]] const vec3<T>& centre(std::uint32_t body) const noexcept { return map_[body].t; }
+    // This step, body b moves by its velocity after the jump (semi-implicit Euler, as a tree
+    // does: constrained/impulse_dynamics.hpp), not by the average: so a gap between it and a
+    // robot closes as their rows assumed (u⁺ ≥ −φ/h), not by half the body's change of velocity less.
+    void move_by_velocity_after(std::uint32_t body) noexcept { by_after_[body] = 1; }
+    // f(body, shape, map, margin) for each moving body whose box (collide's: grown by its reach)
+    // may meet `box`; margin: the settings' plus the body's reach over the step.
+    template <class F>
+    void for_each_body_near(const collision::aabb<T>& box, F&& f) noexcept {
+        broadphase_.query(box, [&](collision::proxy_id p) {
+            const auto b = static_cast<std::uint32_t>(broadphase_.user_of(p));
+            with_body(b, [&](auto& g, std::size_t i) { f(b, g.shape[i], map_[b], settings_.margin + reach_[b]); });
+        });
+    }
+    // f(index, shape, map) for each static shape (a kinematic or soft one as if fixed and rigid).
+    template <class F>
+    void for_each_static(F&& f) const noexcept {
+        for (std::size_t s = 0; s < static_shape_.size(); ++s) f(s, static_shape_[s], static_map_[s]);
     }
 
     // ---- reading ----
@@ -1172,8 +1225,6 @@ private:
             if (b >= g.offset && b < g.offset + g.capacity) f(g, b - g.offset);
         });
     }
-    // the rows a step may have: the contact points and the joints' blocks (at most three a joint)
-    static constexpr std::size_t rows_for(const world_capacity& c) noexcept { return c.contacts + 3 * c.joints; }
     static constexpr std::size_t sum(const std::array<std::size_t, kinds>& a) noexcept {
         std::size_t s = 0;
         for (std::size_t x : a) s += x;
@@ -1293,9 +1344,6 @@ private:
         });
         return ok;
     }
-    std::span<const constraints::contact_row<T>> rows() const noexcept { return {rows_.data(), contacts_}; }
-    std::span<screw<T>> velocities() noexcept { return {velocity_.data(), total_}; }
-    std::span<const constraints::mobility<T>> mobilities() const noexcept { return {mobility_.data(), total_}; }
 
     world_settings<T> settings_;
     std::tuple<group<Kinds>...> groups_;
@@ -1353,6 +1401,7 @@ private:
     std::pmr::vector<std::uint16_t> part_of_row_, slab_of_body_;
     std::pmr::vector<world_detail::ranked<T>> ranked_;  // the bodies by their coordinate across the slabs
     std::pmr::vector<T> partial_;
+    std::pmr::vector<unsigned char> by_after_;  // move_by_velocity_after's bodies, this step (bytes: set and cleared by threads)
     team crew_;
     std::size_t blocks_ = 0, joined_count_ = 0, couplings_count_ = 0;  // blocks_: the joints' blocks, the rows' first
     std::size_t manifolds_ = 0, contacts_ = 0, stored_count_ = 0;  // contacts_: rows in use, the joints' first

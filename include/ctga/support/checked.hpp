@@ -52,6 +52,7 @@ enum class error_code : unsigned char {
     size_mismatch,          // a mesh without triangles; a height field whose heights are not rows × columns; a contact problem's arrays
     negative_friction,      // a friction coefficient μ < 0 (constraints/)
     joint_to_itself,        // a joint whose two sides are one body (scenes/world.hpp)
+    not_supported,          // a combination a stepper does not handle (a robot in a world stepped softly)
     // computations
     did_not_converge,       // an implicit integration step's iteration did not converge
 };
@@ -103,6 +104,7 @@ enum class error_code : unsigned char {
                    "a contact problem's arrays disagree with its contact count (mu: m, impulses: 3m)";
         case error_code::negative_friction: return "ctga: a friction coefficient must not be negative";
         case error_code::joint_to_itself: return "ctga: a joint joins two different bodies (or a body and the ground)";
+        case error_code::not_supported: return "ctga: a combination the stepper does not handle (a robot in a world with substeps > 0)";
         case error_code::zero_direction: return "ctga: an axis must have a direction (it is the zero vector)";
         case error_code::not_a_motor: return "ctga: not a rigid motion (g g* = 1 fails beyond rounding, or the rotor part is zero)";
         case error_code::did_not_converge:

@@ -56,6 +56,8 @@ ch::model<gripper_tree> gripper_model(const contact_scenario& s) {
     m.link<2>() = *ch::make_link<ch::floating>(p2, b2);
     return m;
 }
+namespace cn = ctga::constrained;
+namespace co = ctga::collision;
 // The grasp in one world: the fingers (the scenario's bodies 0 and 1) a tree, the cube (body 2) a
 // world's body of the same mass and inertia, started as the scenario starts it.
 using fingers_tree = ch::tree<ch::link<-1, ch::prismatic_y>, ch::link<-1, ch::prismatic_y>>;

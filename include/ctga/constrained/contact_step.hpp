@@ -102,18 +102,21 @@ class contact_stepper {
         for (const constraint_block<T>& c : permanent.blocks()) keep(c, key(0, count_), no_partner, report);
         // 1. contacts
         chains::algorithm_detail::fill_joint_maps(X, m, q);
-        chains::algorithm_detail::fill_world_poses<Tree, T>(g_, m, q, X);
+        chains::algorithm_detail::world_poses<Tree, T> g(uninitialized);
+        chains::algorithm_detail::fill_world_poses<Tree, T>(g, m, q, X);
         const auto shapes = geometry.shapes();
+        const auto pose_of = [&](const auto& s) { return compose(g.pose[static_cast<std::size_t>(s.body)], s.at); };
         const auto add_manifold = [&](const collision::manifold<T>& mf, int a, int b, std::uint64_t pair, std::uint32_t partner) {
             const vec3<T> n = linear3::scale(T(-1), mf.normal);  // from B to A
             for (std::size_t p = 0; p < mf.count; ++p) {
                 const collision::contact_point<T>& c = mf.points[p];
                 motor_map<T> at_a = chains::tree_detail::identity_map<T>();
-                at_a.t = point_in(g_.pose[static_cast<std::size_t>(a)], c.point_a);
+                at_a.t = point_in(g.pose[static_cast<std::size_t>(a)], c.point_a);
                 // B's frame at its witness, built in B's axes (its tangents turn with B)
-                const motor_map<T>* G = b >= 0 ? &g_.pose[static_cast<std::size_t>(b)] : nullptr;
+                const motor_map<T>* G = b >= 0 ? &g.pose[static_cast<std::size_t>(b)] : nullptr;
                 const motor_map<T> at_b = constraint_set<Tree, T, Capacity>::contact_frame(G ? point_in(*G, c.point_b) : c.point_b,
                                                                                          G ? linear3::apply_transposed(G->R, n) : n);
+                if (partner != no_partner) partner_point_[count_] = c.point_a;
                 keep({block_kind::contact, a, b, at_a, at_b, settings.mu}, key(partner == no_partner ? 1 : 4, (pair << 32) | c.id), partner, report);
                 ++report.contacts;
                 report.penetration = -c.separation > report.penetration ? -c.separation : report.penetration;
@@ -185,17 +188,15 @@ class contact_stepper {
     [[nodiscard]] constexpr std::span<const T> impulses() const noexcept { return {result_.impulse.data(), 3 * blocks_.size()}; }
     [[nodiscard]] constexpr std::span<T> impulses() noexcept { return {result_.impulse.data(), 3 * blocks_.size()}; }
     [[nodiscard]] constexpr const constraint_set<Tree, T, Capacity>& block_set() const noexcept { return blocks_; }
-    // Block i's body outside the tree (gather's `bodies`), or no_partner.
+    // Block i's body outside the tree (gather's `bodies`), or no_partner; with a partner, A's
+    // point of the block in the world (its rows' lines pass through it).
     [[nodiscard]] constexpr std::uint32_t partner(std::size_t i) const noexcept { return partner_[i]; }
-    // The bodies' poses at the step's q (gather's).
-    [[nodiscard]] constexpr const motor_map<T>& body_pose(std::size_t b) const noexcept { return g_.pose[b]; }
+    [[nodiscard]] constexpr const vec3<T>& partner_point(std::size_t i) const noexcept { return partner_point_[i]; }
 
    private:
     static constexpr std::uint64_t key(std::uint64_t kind, std::uint64_t id) noexcept { return (kind << 60) | id; }
     // x in the frame of G: Rᵀ (x − t)
     static constexpr vec3<T> point_in(const motor_map<T>& G, const vec3<T>& x) noexcept { return linear3::apply_transposed(G.R, linear3::sub(x, G.t)); }
-    template <class S>
-    constexpr motor_map<T> pose_of(const S& s) const noexcept { return compose(g_.pose[static_cast<std::size_t>(s.body)], s.at); }
     constexpr void keep(const constraint_block<T>& c, std::uint64_t k, std::uint32_t partner, step_report<T>& report) noexcept {
         if (report.error != error_code::none) return;
         if (const error_code e = blocks_.add(c); e != error_code::none) return void(report.error = e);
@@ -207,9 +208,9 @@ class contact_stepper {
     constraint_set<Tree, T, Capacity> blocks_;
     std::array<std::uint64_t, Capacity> keys_{}, last_keys_{};
     std::array<std::uint32_t, Capacity> partner_{};
+    std::array<vec3<T>, Capacity> partner_point_{};
     std::size_t count_ = 0, last_count_ = 0;
     std::array<T, 3 * Capacity> last_{};
-    chains::algorithm_detail::world_poses<Tree, T> g_{uninitialized};
     impulse_result<Tree, T, Capacity> result_{};
     std::array<T, dynamics_detail::polish_scratch_size(Capacity)> scratch_;
 };

@@ -198,8 +198,7 @@ class robot_world {
             const std::uint32_t body = robot.partner(i);
             if (body == robot.no_partner) continue;
             const constraint_block<T>& c = blocks[i];
-            const motor_map<T>& A = robot.body_pose(static_cast<std::size_t>(c.a));
-            const vec3<T> x = linear3::add(linear3::apply(A.R, c.at_a.t), A.t);
+            const vec3<T>& x = robot.partner_point(i);
             const mat3<T>& E = c.at_b.R;  // (B the world: its axes are the world's)
             row.direction = {vec3<T>{E[0][2], E[1][2], E[2][2]}, vec3<T>{E[0][0], E[1][0], E[2][0]}, vec3<T>{E[0][1], E[1][1], E[2][1]}};
             row.a = constraints::make_side(body, world.centre(body), x, row.direction);

@@ -10,6 +10,7 @@
 //     pivot's, so each step keeps the angular momentum about the pivot's axis (the arm's
 //     I θ̇ and the ball's I ω + c × m v, taken about the step's start) to rounding, the ball is
 //     knocked away, and the kinetic energy does not grow;
+//   - the same tree's cube dropped onto a world's ground and onto the stepper's: the same motion;
 //   - refused: a world stepped softly (substeps > 0), a step h ≤ 0; both states kept.
 #include <array>
 #include <cmath>
@@ -148,6 +149,43 @@ TEST_CASE("A gripper holds a world's cube as it holds a cube of its own tree, an
     speed = 0;
     for (std::size_t k = 0; k < 6; ++k) worst(speed, std::abs(scene->world.velocity<0>(0)[k]));
     CHECK(speed < 1e-6);
+}
+
+TEST_CASE("A robot lands on a world's ground as on the stepper's", "[constrained][robot_world]") {
+    // the gripper-and-cube tree, fingers wide open, its cube dropped from 2 cm onto the ground:
+    // the world's static (no world bodies) and the stepper's static_shape give the same motion
+    const cn::step_settings<double> settings = tight(2e-3);
+    const ch::model<gripper_and_cube> m = [&] {
+        ch::model<gripper_and_cube> out = fingers<gripper_and_cube>();
+        out.link<2>() = *ch::make_link<ch::floating>(at(0, 0, 0.3), block(cube_mass, cube_I));
+        return out;
+    }();
+    auto geometry = pads<gripper_and_cube>();
+    REQUIRE(geometry.attach(2, *co::make_box(side / 2, side / 2, side / 2)) == ctga::error_code::none);
+    const ctga::motor<double> start = ctga::rigid_motion(ctga::make_translator(0.01, 0.0, -0.25), ctga::make_rotor(0.2, 0.0, 1.0, 0.0));  // tilted: lands on an edge
+    ch::configuration<gripper_and_cube> qa{0.05, -0.05}, qb;
+    for (std::size_t k = 0; k < 8; ++k) qa[2 + k] = start[k];
+    qb = qa;
+    ch::joint_vector<gripper_and_cube> qda{}, qdb{}, tau{};
+    auto scene = std::make_unique<cn::robot_world<gripper_and_cube, double, 16, plane, cube_kind>>(
+        std::array<std::size_t, 1>{0}, ctga::world_capacity{.statics = 1, .contacts = 16, .pairs = 4});
+    REQUIRE(scene->world.add_static(plane{}, at(0, 0, 0), {1.0, 0.0}));
+    auto tree = std::make_unique<cn::contact_stepper<gripper_and_cube, double, 16>>();
+    const std::array<cn::static_shape<plane, double>, 1> ground{};
+    double gap = 0;
+    std::size_t landed = 0;
+    for (int k = 0; k < 150; ++k) {
+        const cn::scene_report<double> a = scene->step(m, qa, qda, tau, geometry, settings);
+        const cn::step_report<double> b = tree->step(m, qb, qdb, tau, geometry, std::span<const cn::static_shape<plane, double>>(ground), settings);
+        REQUIRE(a.error == ctga::error_code::none);
+        REQUIRE(b.error == ctga::error_code::none);
+        CHECK(a.robot.contacts == b.contacts);
+        landed += a.robot.contacts > 0;
+        for (std::size_t i = 0; i < 10; ++i) worst(gap, std::abs(qa[i] - qb[i]));
+    }
+    INFO("150 steps: configurations apart by " << gap << "; " << landed << " steps on the ground");
+    CHECK(landed > 50);
+    CHECK(gap < 1e-9);
 }
 
 TEST_CASE("An arm knocks a free ball away: each step keeps the angular momentum about its pivot", "[constrained][robot_world]") {

@@ -35,6 +35,9 @@
 //                   exact way's; the soft step's impulses are a substep's)
 //   integrate       poses from the velocities (the soft step's: from the displacements)
 //   store_impulses  the impulses by contact, sorted, for the next warm start
+// begin (collide … warm_start), correct (solve's position correction) and end (integrate,
+// store_impulses) let a stepper solve the world's rows with its own (constrained/robot_world.hpp:
+// a robot's), reading and writing them through rows(), impulses(), velocities() and mobilities().
 //
 // Time stepping (Moreau–Jean with θ = ½ for positions): velocities jump to s⁺ = s_free + N⁻¹ Jᵀ r,
 // positions move with the average (s⁻ + s⁺)/2, the centre of mass by h (v⁻ + v⁺)/2 and the

@@ -34,7 +34,7 @@
 //      (physics_world::move_by_velocity_after), so that their gaps close as the rows assumed:
 //      by the average, as the world's other bodies move, a ball the arm knocks at 0.8 m/s moved
 //      h v / 2 less than the arm's row assumed, and the next step's push out of that overlap
-//      gave back 5e-4 of the energy in a step (measured, the test's arm).
+//      added 5e-4 of the energy in a step (measured, the test's arm).
 // Each side keeps its own laws: the robot's contacts (with bodies too) push out of overlap by the
 // velocity bias β φ / h (impulse_dynamics.hpp) and take the stepper's μ; the world's keep its
 // speculative rows, restitution, materials and split-impulse correction. The robot meets a

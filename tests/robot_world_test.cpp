@@ -59,6 +59,18 @@ cn::robot_geometry<Tree, co::box<double>, double, 3> pads() {
     REQUIRE(g.attach(1, *co::make_box(0.02, 0.005, 0.03)) == ctga::error_code::none);
     return g;
 }
+// The cube as the tree's third root, at (0, 0, 0.3) for q = identity; its shape last (each
+// contact's A a finger, as in a world).
+ch::model<gripper_and_cube> fingers_and_cube() {
+    ch::model<gripper_and_cube> out = fingers<gripper_and_cube>();
+    out.link<2>() = *ch::make_link<ch::floating>(at(0, 0, 0.3), block(cube_mass, cube_I));
+    return out;
+}
+cn::robot_geometry<gripper_and_cube, co::box<double>, double, 3> pads_and_cube() {
+    auto g = pads<gripper_and_cube>();
+    REQUIRE(g.attach(2, *co::make_box(side / 2, side / 2, side / 2)) == ctga::error_code::none);
+    return g;
+}
 cn::step_settings<double> tight(double h) {
     cn::step_settings<double> s;
     s.step = h;
@@ -81,14 +93,9 @@ TEST_CASE("A gripper holds a world's cube as it holds a cube of its own tree, an
     const auto geometry = pads<gripper>();
     ch::configuration<gripper> q{-0.015 - overlap, 0.015 + overlap};
     ch::joint_vector<gripper> qd{}, tau{-squeeze, squeeze};
-    // the same cube as the tree's third root (its shape last: each contact's A a finger, as in the world)
-    const ch::model<gripper_and_cube> mt = [&] {
-        ch::model<gripper_and_cube> out = fingers<gripper_and_cube>();
-        out.link<2>() = *ch::make_link<ch::floating>(at(0, 0, 0.3), block(cube_mass, cube_I));
-        return out;
-    }();
-    auto geometry_t = pads<gripper_and_cube>();
-    REQUIRE(geometry_t.attach(2, *co::make_box(side / 2, side / 2, side / 2)) == ctga::error_code::none);
+    // the same cube as the tree's third root
+    const ch::model<gripper_and_cube> mt = fingers_and_cube();
+    const auto geometry_t = pads_and_cube();
     auto tree = std::make_unique<cn::contact_stepper<gripper_and_cube, double, 16>>();
     ch::configuration<gripper_and_cube> qt{q[0], q[1], 1, 0, 0, 0, 0, 0, 0, 0};
     ch::joint_vector<gripper_and_cube> qdt{}, taut{-squeeze, squeeze, 0, 0, 0, 0, 0, 0};
@@ -155,13 +162,8 @@ TEST_CASE("A robot lands on a world's ground as on the stepper's", "[constrained
     // the gripper-and-cube tree, fingers wide open, its cube dropped from 2 cm onto the ground:
     // the world's static (no world bodies) and the stepper's static_shape give the same motion
     const cn::step_settings<double> settings = tight(2e-3);
-    const ch::model<gripper_and_cube> m = [&] {
-        ch::model<gripper_and_cube> out = fingers<gripper_and_cube>();
-        out.link<2>() = *ch::make_link<ch::floating>(at(0, 0, 0.3), block(cube_mass, cube_I));
-        return out;
-    }();
-    auto geometry = pads<gripper_and_cube>();
-    REQUIRE(geometry.attach(2, *co::make_box(side / 2, side / 2, side / 2)) == ctga::error_code::none);
+    const ch::model<gripper_and_cube> m = fingers_and_cube();
+    const auto geometry = pads_and_cube();
     const ctga::motor<double> start = ctga::rigid_motion(ctga::make_translator(0.01, 0.0, -0.25), ctga::make_rotor(0.2, 0.0, 1.0, 0.0));  // tilted: lands on an edge
     ch::configuration<gripper_and_cube> qa{0.05, -0.05}, qb;
     for (std::size_t k = 0; k < 8; ++k) qa[2 + k] = start[k];
